@@ -1,0 +1,283 @@
+// Parsing, validation and printing for `impetus calc`.
+#include "calc/calc.hpp"
+
+#include <impetus/error.hpp>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <set>
+
+namespace impetus::cli {
+namespace {
+
+using nlohmann::ordered_json;
+
+/// A usage problem: reported as one line on stderr with exit status 2.
+struct UsageError {
+  std::string message;
+};
+
+double parseNumber(const std::string& name, const std::string& text) {
+  double value = 0.0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  // std::from_chars does not accept a leading '+'; allow it as people type it.
+  if (first != last && *first == '+') {
+    ++first;
+  }
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (text.empty() || ec != std::errc() || ptr != last) {
+    throw UsageError{fmt::format("--{} = '{}': not a number", name, text)};
+  }
+  return value;
+}
+
+ordered_json toJson(const Value& value) {
+  return std::visit([](const auto& v) { return ordered_json(v); }, value);
+}
+
+std::string formatNumber(double v) { return fmt::format("{:.10g}", v); }
+
+std::string toText(const Value& value) {
+  struct Visitor {
+    std::string operator()(double v) const { return formatNumber(v); }
+    std::string operator()(bool v) const { return v ? "true" : "false"; }
+    std::string operator()(const std::string& v) const { return v; }
+    std::string operator()(const Vector& v) const {
+      std::string s = "(";
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        s += (i ? ", " : "") + formatNumber(v[i]);
+      }
+      return s + ")";
+    }
+    std::string operator()(const Matrix& m) const {
+      std::string s = "[";
+      for (std::size_t i = 0; i < m.size(); ++i) {
+        s += (i ? ", " : "") + (*this)(m[i]);
+      }
+      return s + "]";
+    }
+  };
+  return std::visit(Visitor{}, value);
+}
+
+ordered_json modelJson(const Model& m) {
+  ordered_json params = ordered_json::array();
+  for (const Param& p : m.params) {
+    ordered_json j{{"name", p.name},
+                   {"unit", p.unit},
+                   {"help", p.help},
+                   {"kind", p.kind == ParamKind::number ? "number" : (p.kind == ParamKind::text ? "text" : "path")},
+                   {"required", !p.defaultValue.has_value()}};
+    j["default"] = p.defaultValue ? ordered_json(*p.defaultValue) : ordered_json(nullptr);
+    params.push_back(std::move(j));
+  }
+  return {{"name", m.name}, {"topic", m.topic}, {"summary", m.summary}, {"params", std::move(params)}};
+}
+
+std::string paramLine(const Param& p) {
+  std::string line = fmt::format("    --{}", p.name);
+  if (!p.unit.empty()) {
+    line += fmt::format(" [{}]", p.unit);
+  }
+  line += fmt::format("  {}", p.help);
+  line += p.defaultValue ? fmt::format(" (default {})", *p.defaultValue) : " (required)";
+  return line;
+}
+
+void printList(bool json) {
+  if (json) {
+    ordered_json models = ordered_json::array();
+    for (const Model& m : registry().models()) {
+      models.push_back(modelJson(m));
+    }
+    fmt::print("{}\n", models.dump(2));
+    return;
+  }
+  std::string topic;
+  for (const Model& m : registry().models()) {
+    if (m.topic != topic) {
+      topic = m.topic;
+      fmt::print("\n{}\n", topic);
+    }
+    fmt::print("  {:<24} {}\n", m.name, m.summary);
+    for (const Param& p : m.params) {
+      fmt::print("{}\n", paramLine(p));
+    }
+  }
+}
+
+void printModelHelp(const Model& m) {
+  fmt::print("impetus calc {} [--param value ...] [--json]\n{}\n\nparameters:\n", m.name, m.summary);
+  for (const Param& p : m.params) {
+    fmt::print("{}\n", paramLine(p));
+  }
+}
+
+Args parseArgs(const Model& model, const std::vector<std::string>& extra, bool& json, bool& help) {
+  std::map<std::string, std::string> values;
+  for (std::size_t i = 0; i < extra.size(); ++i) {
+    const std::string& token = extra[i];
+    if (token == "--json") {
+      json = true;
+      continue;
+    }
+    if (token == "--help" || token == "-h") {
+      help = true;
+      continue;
+    }
+    if (token.size() < 3 || token.rfind("--", 0) != 0) {
+      throw UsageError{
+          fmt::format("unexpected argument '{}' for model '{}' (parameters are --name value)", token, model.name)};
+    }
+    std::string name = token.substr(2);
+    std::string value;
+    if (const auto eq = name.find('='); eq != std::string::npos) {
+      value = name.substr(eq + 1);
+      name.resize(eq);
+    } else if (i + 1 < extra.size()) {
+      value = extra[++i];
+    } else {
+      throw UsageError{fmt::format("--{}: missing value", name)};
+    }
+    const bool known =
+        std::any_of(model.params.begin(), model.params.end(), [&](const Param& p) { return p.name == name; });
+    if (!known) {
+      throw UsageError{fmt::format("unknown parameter --{} for model '{}' (impetus calc {} --help lists them)", name,
+                                   model.name, model.name)};
+    }
+    if (values.count(name) != 0) {
+      throw UsageError{fmt::format("--{} given twice", name)};
+    }
+    values[name] = value;
+  }
+  std::map<std::string, double> numbers;
+  if (help) {
+    return Args(values, numbers);
+  }
+  for (const Param& p : model.params) {
+    auto it = values.find(p.name);
+    if (it == values.end()) {
+      if (!p.defaultValue) {
+        throw UsageError{fmt::format("missing parameter --{} [{}] for model '{}'", p.name, p.unit, model.name)};
+      }
+      it = values.emplace(p.name, *p.defaultValue).first;
+    }
+    if (p.kind == ParamKind::number) {
+      numbers[p.name] = parseNumber(p.name, it->second);
+    }
+  }
+  return Args(std::move(values), std::move(numbers));
+}
+
+void printResult(const Model& model, const Args& args, const Result& result, bool json) {
+  if (json) {
+    ordered_json inputs = ordered_json::object();
+    for (const Param& p : model.params) {
+      const std::string& raw = args.text(p.name);
+      ordered_json value = p.kind == ParamKind::number ? ordered_json(args.number(p.name)) : ordered_json(raw);
+      inputs[p.name] = {{"value", std::move(value)}, {"unit", p.unit}};
+    }
+    ordered_json outputs = ordered_json::object();
+    for (const Output& o : result.outputs) {
+      outputs[o.name] = {{"value", toJson(o.value)}, {"unit", o.unit}};
+    }
+    const ordered_json doc{
+        {"model", model.name}, {"inputs", std::move(inputs)}, {"outputs", std::move(outputs)}, {"notes", result.notes}};
+    fmt::print("{}\n", doc.dump(2));
+    return;
+  }
+  fmt::print("{}: {}\n", model.name, model.summary);
+  for (const Param& p : model.params) {
+    fmt::print("  {:<22} = {} {}\n", p.name, args.text(p.name), p.unit);
+  }
+  fmt::print("results:\n");
+  for (const Output& o : result.outputs) {
+    fmt::print("  {:<22} = {} {}\n", o.name, toText(o.value), o.unit);
+  }
+  for (const std::string& note : result.notes) {
+    fmt::print("note: {}\n", note);
+  }
+}
+
+/// "innerRadius" -> "inner-radius": the library's field names as the CLI spells parameters.
+std::string kebabCase(const std::string& field) {
+  std::string out;
+  for (const char c : field) {
+    if (c >= 'A' && c <= 'Z') {
+      out += '-';
+      out += static_cast<char>(c - 'A' + 'a');
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+/// Rewrites "innerRadius = 2: ..." as "--inner-radius = 2: ..." when the library's field is one
+/// of the model's parameters, so the message names what the user typed.
+std::string asParameterMessage(const Model& model, const Error& e) {
+  const std::string what = e.what();
+  const std::string param = kebabCase(e.field());
+  const bool isParam =
+      std::any_of(model.params.begin(), model.params.end(), [&](const Param& p) { return p.name == param; });
+  if (isParam && what.rfind(e.field(), 0) == 0) {
+    return "--" + param + what.substr(e.field().size());
+  }
+  return what;
+}
+
+} // namespace
+
+double Args::number(const std::string& name) const {
+  const auto it = numbers_.find(name);
+  if (it == numbers_.end()) {
+    throw std::logic_error("calc model read an undeclared number parameter: " + name);
+  }
+  return it->second;
+}
+
+const std::string& Args::text(const std::string& name) const {
+  const auto it = values_.find(name);
+  if (it == values_.end()) {
+    throw std::logic_error("calc model read an undeclared parameter: " + name);
+  }
+  return it->second;
+}
+
+int runCalc(bool list, bool json, const std::string& modelName, const std::vector<std::string>& extraArgs) {
+  const Model* model = nullptr;
+  try {
+    if (list) {
+      printList(json || std::find(extraArgs.begin(), extraArgs.end(), "--json") != extraArgs.end());
+      return 0;
+    }
+    if (modelName.empty()) {
+      throw UsageError{"missing model name (impetus calc --list lists the models)"};
+    }
+    model = registry().find(modelName);
+    if (model == nullptr) {
+      throw UsageError{fmt::format("unknown model '{}' (impetus calc --list lists the models)", modelName)};
+    }
+    bool help = false;
+    const Args args = parseArgs(*model, extraArgs, json, help);
+    if (help) {
+      printModelHelp(*model);
+      return 0;
+    }
+    const Result result = model->evaluate(args);
+    printResult(*model, args, result, json);
+    return 0;
+  } catch (const UsageError& e) {
+    fmt::print(stderr, "error: {}\n", e.message);
+  } catch (const Error& e) {
+    fmt::print(stderr, "error: {}\n", model != nullptr ? asParameterMessage(*model, e) : std::string(e.what()));
+  }
+  return 2;
+}
+
+} // namespace impetus::cli

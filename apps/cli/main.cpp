@@ -1,0 +1,51 @@
+// impetus: the command-line tool. `impetus calc` evaluates any model of the library,
+// `impetus demo` runs a headless demo.
+#include "calc/calc.hpp"
+#include "demos/demos.hpp"
+
+#include <impetus/version.hpp>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+int main(int argc, char** argv) {
+  CLI::App app{"Impetus: game physics from Physics for Game Developers (2nd ed.), as a modern library", "impetus"};
+  app.set_version_flag("--version", std::string("impetus ") + impetus::versionString);
+  app.require_subcommand(1);
+
+  auto* calc = app.add_subcommand("calc", "evaluate a model: impetus calc MODEL --param value ... [--json]");
+  bool list = false;
+  bool json = false;
+  std::string model;
+  calc->add_flag("--list", list, "list every model with its parameters and units");
+  calc->add_flag("--json", json, "machine-readable output");
+  calc->add_option("model", model, "model name (see --list)");
+  // Everything after the model name is the model's own --param value list.
+  calc->prefix_command();
+
+  auto* demo = app.add_subcommand("demo", "run a demo headless and print what it shows");
+  std::string demoName;
+  bool demoList = false;
+  demo->add_option("name", demoName, "demo name (default: the flagship demo)");
+  demo->add_flag("--list", demoList, "list the demos");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // Usage errors exit with 2, one line on stderr.
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 2;
+  }
+
+  if (calc->parsed()) {
+    return impetus::cli::runCalc(list, json, model, calc->remaining());
+  }
+  if (demo->parsed()) {
+    return impetus::cli::runDemo(demoName, demoList);
+  }
+  return 2;
+}
