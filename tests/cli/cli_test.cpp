@@ -1,0 +1,253 @@
+// Black-box tests of the `impetus` executable: exit codes, one-line errors, JSON output, and
+// the calc models' numbers against closed forms and the book's worked example.
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using nlohmann::json;
+
+struct CliRun {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string quote(const std::string& arg) {
+  std::string q(1, '\'');
+  for (char c : arg) {
+    if (c == '\'') {
+      q.append("'\\''");
+    } else {
+      q.push_back(c);
+    }
+  }
+  q.push_back('\'');
+  return q;
+}
+
+/// Runs the CLI with `args`, capturing stdout and stderr separately.
+CliRun impetus(const std::vector<std::string>& args) {
+  // ctest runs tests in parallel processes: one stderr file per test and call.
+  static int calls = 0;
+  const std::string errPath = ::testing::TempDir() + "impetus_stderr_" +
+                              ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                              std::to_string(++calls) + ".txt";
+  std::string command = quote(IMPETUS_CLI_PATH);
+  for (const std::string& a : args) {
+    command.push_back(' ');
+    command.append(quote(a));
+  }
+  command.append(" 2>").append(quote(errPath));
+  CliRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) {
+    return run;
+  }
+  std::array<char, 4096> buffer{};
+  size_t n = 0;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+    run.out.append(buffer.data(), n);
+  }
+  const int raw = pclose(pipe);
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream err(errPath);
+  std::stringstream ss;
+  ss << err.rdbuf();
+  run.err = ss.str();
+  return run;
+}
+
+/// Exit status 2 and exactly one line on stderr that contains `needle`.
+void expectUsageError(const CliRun& run, const std::string& needle) {
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find(needle), std::string::npos) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+}
+
+double output(const json& doc, const std::string& name) { return doc.at("outputs").at(name).at("value").get<double>(); }
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(Cli, version_and_help_exit_zero) {
+  const CliRun version = impetus({"--version"});
+  EXPECT_EQ(version.status, 0);
+  EXPECT_NE(version.out.find("impetus 0."), std::string::npos);
+  const CliRun help = impetus({"--help"});
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("calc"), std::string::npos);
+  EXPECT_NE(help.out.find("demo"), std::string::npos);
+}
+
+TEST(Cli, unknown_subcommand_exits_two) { EXPECT_EQ(impetus({"frobnicate"}).status, 2); }
+
+TEST(Cli, calc_list_json_describes_every_model_with_units) {
+  const CliRun run = impetus({"calc", "--list", "--json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const json models = json::parse(run.out);
+  ASSERT_TRUE(models.is_array());
+  EXPECT_GE(models.size(), 12U);
+  for (const json& m : models) {
+    EXPECT_FALSE(m.at("name").get<std::string>().empty());
+    EXPECT_FALSE(m.at("summary").get<std::string>().empty());
+    for (const json& p : m.at("params")) {
+      EXPECT_TRUE(p.contains("unit"));
+      EXPECT_TRUE(p.contains("default"));
+    }
+  }
+  // The text listing names the same models.
+  const CliRun text = impetus({"calc", "--list"});
+  for (const json& m : models) {
+    EXPECT_NE(text.out.find(m.at("name").get<std::string>()), std::string::npos);
+  }
+}
+
+TEST(Cli, every_model_with_required_parameters_refuses_to_run_without_them) {
+  const json models = json::parse(impetus({"calc", "--list", "--json"}).out);
+  for (const json& m : models) {
+    const bool needsInput = std::any_of(m.at("params").begin(), m.at("params").end(),
+                                        [](const json& p) { return p.at("required").get<bool>(); });
+    if (needsInput) {
+      expectUsageError(impetus({"calc", m.at("name").get<std::string>()}), "missing parameter");
+    }
+  }
+}
+
+TEST(Cli, solid_sphere_matches_two_fifths_m_r_squared) {
+  const CliRun run = impetus({"calc", "inertia-solid-sphere", "--mass", "2", "--radius", "0.5", "--json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const json doc = json::parse(run.out);
+  EXPECT_EQ(doc.at("model"), "inertia-solid-sphere");
+  EXPECT_DOUBLE_EQ(doc.at("inputs").at("mass").at("value").get<double>(), 2.0);
+  EXPECT_EQ(doc.at("inputs").at("radius").at("unit"), "m");
+  EXPECT_NEAR(output(doc, "Ixx"), 0.4 * 2.0 * 0.25, 1e-15);
+  EXPECT_EQ(doc.at("outputs").at("Ixx").at("unit"), "kg m^2");
+  EXPECT_NEAR(output(doc, "volume"), 4.0 / 3.0 * M_PI * 0.125, 1e-15);
+}
+
+TEST(Cli, parameters_accept_equals_form_and_json_flag_anywhere) {
+  const CliRun run = impetus({"calc", "--json", "inertia-rod", "--length=3", "--mass", "4"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NEAR(output(json::parse(run.out), "Ixx"), 4.0 * 9.0 / 12.0, 1e-15);
+}
+
+TEST(Cli, bad_input_exits_two_with_one_line_naming_it) {
+  expectUsageError(impetus({"calc", "no-such-model"}), "no-such-model");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "1", "--length", "2", "--colour", "red"}), "--colour");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "1"}), "--length");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "one", "--length", "2"}), "--mass");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "nan", "--length", "2"}), "--mass = nan");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "-1", "--length", "2"}), "--mass = -1");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "1", "--length", "inf"}), "--length = inf");
+  expectUsageError(
+      impetus({"calc", "inertia-hollow-sphere", "--mass", "1", "--inner-radius", "2", "--outer-radius", "1"}),
+      "--inner-radius = 2");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "1", "--mass", "2", "--length", "1"}), "twice");
+  expectUsageError(impetus({"calc"}), "missing model");
+}
+
+TEST(Cli, parallel_axis_adds_m_d_squared) {
+  const CliRun run = impetus({"calc", "parallel-axis", "--inertia", "1.5", "--mass", "2", "--distance", "3", "--json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_DOUBLE_EQ(output(json::parse(run.out), "inertia"), 1.5 + 2.0 * 9.0);
+}
+
+TEST(Cli, polygon_right_triangle_matches_closed_form) {
+  // Legs a = 3 (x), b = 4 (y): area 6, centroid (1, 4/3), polar moment about the centroid
+  // m (a^2 + b^2) / 18.
+  const CliRun run = impetus({"calc", "polygon", "--vertices", "0,0 3,0 0,4", "--density", "2", "--json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const json doc = json::parse(run.out);
+  EXPECT_NEAR(output(doc, "area"), 6.0, 1e-12);
+  EXPECT_NEAR(output(doc, "mass"), 12.0, 1e-12);
+  EXPECT_NEAR(doc.at("outputs").at("centroid").at("value")[1].get<double>(), 4.0 / 3.0, 1e-12);
+  EXPECT_NEAR(output(doc, "inertia"), 12.0 * 25.0 / 18.0, 1e-12);
+  expectUsageError(impetus({"calc", "polygon", "--vertices", "0,0 1,1 2,2"}), "degenerate");
+  expectUsageError(impetus({"calc", "polygon", "--vertices", "0,0 1,x 2,2"}), "--vertices");
+}
+
+// The book's example 1.1 with g = 9.8, against the spec's recomputed values (the book's own
+// fuel weight, 920.6 N, does not follow from rho g V and is not used).
+TEST(Cli, composite_reproduces_car_driver_fuel_example) {
+  const CliRun run = impetus(
+      {"calc", "composite", "--file", std::string(IMPETUS_SOURCE_DIR) + "/scenes/mass/car_driver_fuel.json", "--json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const json doc = json::parse(run.out);
+  EXPECT_NEAR(output(doc, "weight"), 19342.25, 1e-6);
+  EXPECT_NEAR(output(doc, "mass"), 1973.699, 1e-3);
+  const json cg = doc.at("outputs").at("center_of_mass").at("value");
+  EXPECT_NEAR(cg[0].get<double>(), 30.4157, 5e-5);
+  EXPECT_NEAR(cg[1].get<double>(), 30.5220, 5e-5);
+  const json inertia = doc.at("outputs").at("inertia_tensor").at("value");
+  EXPECT_NEAR(inertia[2][2].get<double>(), 4512.20, 5e-3);
+  EXPECT_NEAR(output(doc, "part.fuel.mass"), 101.25, 1e-9);
+}
+
+TEST(Cli, composite_rotated_box_swaps_moments) {
+  // A 1 x 2 x 3 m box turned 90 degrees about z: its x and y moments trade places, and the
+  // principal moments stay the box's own.
+  const std::string path = writeTemp("rotated_box.json", R"({"parts": [{"shape": "box", "size": [1, 2, 3],
+      "mass": 12, "orientation": {"axis": [0, 0, 1], "angle_deg": 90}}]})");
+  const CliRun run = impetus({"calc", "composite", "--file", path, "--json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const json doc = json::parse(run.out);
+  const json inertia = doc.at("outputs").at("inertia_tensor").at("value");
+  EXPECT_NEAR(inertia[0][0].get<double>(), 12.0 * (1.0 + 9.0) / 12.0, 1e-12);
+  EXPECT_NEAR(inertia[1][1].get<double>(), 12.0 * (4.0 + 9.0) / 12.0, 1e-12);
+  const json moments = doc.at("outputs").at("principal_moments").at("value");
+  EXPECT_NEAR(moments[0].get<double>(), 5.0, 1e-12);
+  EXPECT_NEAR(moments[2].get<double>(), 13.0, 1e-12);
+}
+
+TEST(Cli, composite_rejects_malformed_files_naming_the_key) {
+  expectUsageError(impetus({"calc", "composite", "--file", "/nonexistent/body.json"}), "/nonexistent/body.json");
+  expectUsageError(impetus({"calc", "composite", "--file", writeTemp("bad1.json", "{ \"parts\": [ ")}),
+                   "malformed JSON");
+  expectUsageError(
+      impetus({"calc", "composite", "--file",
+               writeTemp("bad2.json", R"({"parts": [{"shape": "box", "size": [1, 2, 3], "mass": 1, "colour": 3}]})")}),
+      "parts[0].colour");
+  expectUsageError(
+      impetus({"calc", "composite", "--file",
+               writeTemp("bad3.json", R"({"parts": [{"shape": "solid-sphere", "radius": -1, "mass": 1}]})")}),
+      "parts[0].radius = -1");
+  expectUsageError(impetus({"calc", "composite", "--file",
+                            writeTemp("bad4.json", R"({"parts": [{"shape": "box", "size": [1, 2], "mass": 1}]})")}),
+                   "parts[0].size");
+  expectUsageError(
+      impetus({"calc", "composite", "--file",
+               writeTemp("bad5.json", R"({"parts": [{"shape": "box", "size": [1, 2, 3], "mass": 1, "weight": 2}]})")}),
+      "exactly one of");
+  expectUsageError(
+      impetus({"calc", "composite", "--file", writeTemp("bad6.json", R"({"parts": [{"shape": "custom", "mass": 1,
+                              "inertia": [[1, 0, 0], [0, 1, 0], [0, 0, 3]]}]})")}),
+      "triangle inequality");
+  expectUsageError(impetus({"calc", "composite", "--file",
+                            writeTemp("bad7.json", R"({"parts": [{"shape": "box", "size": [1, 1, 1], "mass": 1,
+                              "orientation": {"axis": [0, 0, 0], "angle_deg": 5}}]})")}),
+                   "parts[0].orientation.axis");
+}
+
+TEST(Cli, demos_run_and_unknown_demo_exits_two) {
+  const CliRun car = impetus({"demo", "car-driver-fuel"});
+  EXPECT_EQ(car.status, 0);
+  EXPECT_NE(car.out.find("4512.20"), std::string::npos) << car.out;
+  const CliRun box = impetus({"demo", "tumbling-box"});
+  EXPECT_EQ(box.status, 0);
+  EXPECT_NE(box.out.find("reversed"), std::string::npos);
+  EXPECT_EQ(impetus({"demo", "nope"}).status, 2);
+}
+
+} // namespace
