@@ -59,27 +59,33 @@ template <typename V> std::string show(const V& v) { return ::testing::PrintToSt
 // Largest absolute component difference. Unlike std::fmax, worse() propagates NaN, and the
 // callers test d <= tol, so a NaN anywhere fails the comparison instead of passing it.
 template <Real T> T worse(T a, T b) { return (a > b || std::isnan(a)) ? a : b; }
-template <Real T> T maxDiff(const Vec2<T>& a, const Vec2<T>& b) { return worse(std::abs(a.x - b.x), std::abs(a.y - b.y)); }
+template <Real T> T maxDiff(const Vec2<T>& a, const Vec2<T>& b) {
+  return worse(std::abs(a.x - b.x), std::abs(a.y - b.y));
+}
 template <Real T> T maxDiff(const Vec3<T>& a, const Vec3<T>& b) {
   return worse(std::abs(a.x - b.x), worse(std::abs(a.y - b.y), std::abs(a.z - b.z)));
 }
 template <Real T> T maxDiff(const Quat<T>& a, const Quat<T>& b) {
   return worse(worse(std::abs(a.w - b.w), std::abs(a.x - b.x)), worse(std::abs(a.y - b.y), std::abs(a.z - b.z)));
 }
-template <Real T> T maxDiff(const Mat22<T>& a, const Mat22<T>& b) { return worse(maxDiff(a.cx, b.cx), maxDiff(a.cy, b.cy)); }
+template <Real T> T maxDiff(const Mat22<T>& a, const Mat22<T>& b) {
+  return worse(maxDiff(a.cx, b.cx), maxDiff(a.cy, b.cy));
+}
 template <Real T> T maxDiff(const Mat33<T>& a, const Mat33<T>& b) {
   return worse(maxDiff(a.cx, b.cx), worse(maxDiff(a.cy, b.cy), maxDiff(a.cz, b.cz)));
 }
-template <Real T> T maxDiff(const Rot2<T>& a, const Rot2<T>& b) { return worse(std::abs(a.c - b.c), std::abs(a.s - b.s)); }
+template <Real T> T maxDiff(const Rot2<T>& a, const Rot2<T>& b) {
+  return worse(std::abs(a.c - b.c), std::abs(a.s - b.s));
+}
 
 /// Every component of `actual` within `tol` of `expected` (absolute); NaN never passes.
-template <typename V, Real T> ::testing::AssertionResult isNear(const V& actual, const V& expected, T tol) {
+template <typename V, Real T>::testing::AssertionResult isNear(const V& actual, const V& expected, T tol) {
   const T d = maxDiff(actual, expected);
   if (d <= tol) {
     return ::testing::AssertionSuccess();
   }
-  return ::testing::AssertionFailure() << show(actual) << " differs from " << show(expected) << " by " << d
-                                       << " > " << tol;
+  return ::testing::AssertionFailure() << show(actual) << " differs from " << show(expected) << " by " << d << " > "
+                                       << tol;
 }
 
 /// The distance between two rotations up to the quaternion sign: min(|p - q|, |p + q|), taken
@@ -91,13 +97,13 @@ template <Real T> T rotationDiff(const Quat<T>& p, const Quat<T>& q) {
   return (std::isnan(plus) || std::isnan(minus)) ? std::numeric_limits<T>::quiet_NaN() : std::fmin(plus, minus);
 }
 
-template <Real T> ::testing::AssertionResult sameRotation(const Quat<T>& actual, const Quat<T>& expected, T tol) {
+template <Real T>::testing::AssertionResult sameRotation(const Quat<T>& actual, const Quat<T>& expected, T tol) {
   const T d = rotationDiff(actual, expected);
   if (d <= tol) {
     return ::testing::AssertionSuccess();
   }
-  return ::testing::AssertionFailure() << show(actual) << " is not +-" << show(expected) << ": off by " << d
-                                       << " > " << tol;
+  return ::testing::AssertionFailure() << show(actual) << " is not +-" << show(expected) << ": off by " << d << " > "
+                                       << tol;
 }
 
 /// The angle of the rotation that takes p to q, in [0, pi]. atan2 of the relative quaternion's

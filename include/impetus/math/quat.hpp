@@ -109,7 +109,11 @@ template <Real T> [[nodiscard]] T length(const Quat<T>& q) noexcept { return std
 
 /// q / |q|; the zero quaternion has no direction and normalizes to the identity.
 template <Real T> [[nodiscard]] Quat<T> normalize(const Quat<T>& q) noexcept {
-  const T len = length(q);
+  T len = length(q);
+  if (std::isinf(len)) { // |q|^2 overflowed: rescale by the largest component first
+    const T big = std::fmax(std::fmax(std::abs(q.w), std::abs(q.x)), std::fmax(std::abs(q.y), std::abs(q.z)));
+    len = big * length(q / big);
+  }
   if (len <= normalizeTolerance<T>) {
     return Quat<T>::identity();
   }
@@ -220,7 +224,7 @@ template <Real T> [[nodiscard]] bool isFinite(const Quat<T>& q) noexcept {
 }
 
 template <Real T> Quat<T> Quat<T>::fromAxisAngle(const Vec3<T>& axis, T angle) {
-  const T len = length(axis);
+  const T len = std::hypot(axis.x, axis.y, axis.z);
   if (!(len > normalizeTolerance<T>) || !std::isfinite(len)) {
     throwInvalid("rotation axis length", static_cast<double>(len), "axis must be finite and non-zero");
   }

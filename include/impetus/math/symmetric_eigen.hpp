@@ -43,14 +43,14 @@ template <Real T> [[nodiscard]] SymmetricEigen3<T> symmetricEigen(const Mat33<T>
         const T t = std::copysign(T(1), theta) / (std::abs(theta) + std::sqrt(theta * theta + T(1)));
         const T c = T(1) / std::sqrt(t * t + T(1));
         const T s = t * c;
-        for (int k = 0; k < 3; ++k) {
-          // A' = J^T A J, applied to rows then columns.
-          const T akp = a[k][p];
-          const T akq = a[k][q];
-          a[k][p] = c * akp - s * akq;
-          a[k][q] = s * akp + c * akq;
+        for (auto& row : a) {
+          // A' = J^T A J: first A J (columns p and q of every row)...
+          const T akp = row[p];
+          const T akq = row[q];
+          row[p] = c * akp - s * akq;
+          row[q] = s * akp + c * akq;
         }
-        for (int k = 0; k < 3; ++k) {
+        for (int k = 0; k < 3; ++k) { // ...then J^T (A J): rows p and q.
           const T apk = a[p][k];
           const T aqk = a[q][k];
           a[p][k] = c * apk - s * aqk;

@@ -71,7 +71,10 @@ template <Real T> [[nodiscard]] T distance(const Vec2<T>& a, const Vec2<T>& b) n
 /// v / |v|. A vector of (near) zero length has no direction: the result is the zero vector,
 /// never NaN (the book's choice too). Non-finite input stays non-finite.
 template <Real T> [[nodiscard]] Vec2<T> normalize(const Vec2<T>& v) noexcept {
-  const T len = length(v);
+  T len = length(v);
+  if (std::isinf(len)) {
+    len = std::hypot(v.x, v.y); // |v|^2 overflowed: slow, exact path
+  }
   if (len <= normalizeTolerance<T>) {
     return {};
   }

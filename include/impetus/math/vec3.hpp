@@ -82,7 +82,10 @@ template <Real T> [[nodiscard]] T distance(const Vec3<T>& a, const Vec3<T>& b) n
 /// v / |v|. A vector of (near) zero length has no direction: the result is the zero vector,
 /// never NaN (the book's choice too). Non-finite input stays non-finite.
 template <Real T> [[nodiscard]] Vec3<T> normalize(const Vec3<T>& v) noexcept {
-  const T len = length(v);
+  T len = length(v);
+  if (std::isinf(len)) {
+    len = std::hypot(v.x, v.y, v.z); // |v|^2 overflowed (|v| > 1e154 in double): slow, exact path
+  }
   if (len <= normalizeTolerance<T>) {
     return {};
   }
