@@ -43,7 +43,7 @@ Mat33d mat33(const json& j, const std::string& field) {
 
 void requireKnownKeys(const json& object, const std::set<std::string>& known, const std::string& where) {
   for (const auto& item : object.items()) {
-    if (known.count(item.key()) == 0) {
+    if (!known.contains(item.key())) {
       fail(where + "." + item.key(), "unknown key");
     }
   }

@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
   bool demoList = false;
   demo->add_option("name", demoName, "demo name (default: the flagship demo)");
   demo->add_flag("--list", demoList, "list the demos");
+  std::string demoOut;
+  demo->add_option("--out", demoOut, "directory to write the demo's CSV files to");
 
   try {
     app.parse(argc, argv);
@@ -45,7 +47,11 @@ int main(int argc, char** argv) {
     return impetus::cli::runCalc(list, json, model, calc->remaining());
   }
   if (demo->parsed()) {
-    return impetus::cli::runDemo(demoName, demoList);
+    impetus::cli::DemoOptions options;
+    if (!demoOut.empty()) {
+      options.outDir = demoOut;
+    }
+    return impetus::cli::runDemo(demoName, demoList, options);
   }
   return 2;
 }

@@ -39,13 +39,11 @@ MassProperties3 meshMassProperties(std::span<const Vec3d> vertices, std::span<co
   if (triangles.size() < 4) {
     throwInvalid("triangles.size", static_cast<double>(triangles.size()), "a closed mesh needs at least 4 triangles");
   }
-  Vec3d reference{};
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     const std::string name = "vertices[" + std::to_string(i) + "]";
     requireFinite(vertices[i].x, name + ".x");
     requireFinite(vertices[i].y, name + ".y");
     requireFinite(vertices[i].z, name + ".z");
-    reference += vertices[i];
   }
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     for (std::uint32_t index : triangles[i]) {
@@ -56,8 +54,13 @@ MassProperties3 meshMassProperties(std::span<const Vec3d> vertices, std::span<co
     }
   }
   requireClosed(triangles);
-  // Tetrahedra from the vertex average keep the sums well conditioned far from the origin.
-  reference /= static_cast<double>(vertices.size());
+  // Tetrahedra from the average of the triangles' corners keep the sums well conditioned far
+  // from the origin (vertices no triangle uses play no part).
+  Vec3d reference{};
+  for (const TriangleIndices& t : triangles) {
+    reference += vertices[t[0]] + vertices[t[1]] + vertices[t[2]];
+  }
+  reference /= static_cast<double>(3 * triangles.size());
 
   double sixVolume = 0.0; // sum of det = 6 V
   Vec3d firstMoment24{};  // sum of det (a + b + c) = 24 V c

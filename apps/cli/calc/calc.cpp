@@ -50,14 +50,14 @@ std::string toText(const Value& value) {
     std::string operator()(const Vector& v) const {
       std::string s = "(";
       for (std::size_t i = 0; i < v.size(); ++i) {
-        s += (i ? ", " : "") + formatNumber(v[i]);
+        s += (i > 0 ? ", " : "") + formatNumber(v[i]);
       }
       return s + ")";
     }
     std::string operator()(const Matrix& m) const {
       std::string s = "[";
       for (std::size_t i = 0; i < m.size(); ++i) {
-        s += (i ? ", " : "") + (*this)(m[i]);
+        s += (i > 0 ? ", " : "") + (*this)(m[i]);
       }
       return s + "]";
     }
@@ -150,7 +150,7 @@ Args parseArgs(const Model& model, const std::vector<std::string>& extra, bool& 
       throw UsageError{fmt::format("unknown parameter --{} for model '{}' (impetus calc {} --help lists them)", name,
                                    model.name, model.name)};
     }
-    if (values.count(name) != 0) {
+    if (values.contains(name)) {
       throw UsageError{fmt::format("--{} given twice", name)};
     }
     values[name] = value;
@@ -221,7 +221,7 @@ std::string kebabCase(const std::string& field) {
 /// Rewrites "innerRadius = 2: ..." as "--inner-radius = 2: ..." when the library's field is one
 /// of the model's parameters, so the message names what the user typed.
 std::string asParameterMessage(const Model& model, const Error& e) {
-  const std::string what = e.what();
+  std::string what = e.what();
   const std::string param = kebabCase(e.field());
   const bool isParam =
       std::any_of(model.params.begin(), model.params.end(), [&](const Param& p) { return p.name == param; });

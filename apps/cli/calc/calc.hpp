@@ -90,5 +90,13 @@ int runCalc(bool list, bool json, const std::string& modelName, const std::vecto
 
 // Register functions, one per topic.
 void registerMassModels(Registry& registry);
+void registerKinematicsModels(Registry& registry);
+void registerForceModels(Registry& registry);
+void registerKineticsModels(Registry& registry);
+void registerImpactModels(Registry& registry);
+void registerProjectileModels(Registry& registry);
+void registerCannonModels(Registry& registry);
+void registerRelativityModels(Registry& registry);
+
 
 } // namespace impetus::cli

@@ -9,6 +9,7 @@
 #include <impetus/core/solid.hpp>
 #include <impetus/error.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 namespace impetus::cli {
@@ -37,7 +38,7 @@ Result solidResult(const Solid& solid, double mass) {
 }
 
 void addSolid(Registry& registry, std::string name, std::string summary, std::vector<Param> dims,
-              std::function<Solid(const Args&)> make) {
+              const std::function<Solid(const Args&)>& make) {
   dims.insert(dims.begin(), massParam());
   registry.add({std::move(name), topic, std::move(summary), std::move(dims),
                 [make](const Args& a) { return solidResult(make(a), a.number("mass")); }});
@@ -65,13 +66,8 @@ Result composite(const Args& args) {
 /// "x,y x,y ..." (spaces or semicolons between points).
 std::vector<Vec2d> parsePoints(const std::string& text) {
   std::string normalized = text;
-  for (char& c : normalized) {
-    if (c == ';') {
-      c = ' ';
-    } else if (c == ',') {
-      c = ' ';
-    }
-  }
+  std::replace_if(
+      normalized.begin(), normalized.end(), [](char c) { return c == ';' || c == ','; }, ' ');
   std::istringstream in(normalized);
   std::vector<double> values;
   std::string token;
@@ -93,7 +89,7 @@ std::vector<Vec2d> parsePoints(const std::string& text) {
   }
   std::vector<Vec2d> points;
   for (std::size_t i = 0; i < values.size(); i += 2) {
-    points.push_back({values[i], values[i + 1]});
+    points.emplace_back(values[i], values[i + 1]);
   }
   return points;
 }

@@ -24,6 +24,13 @@ const Registry& registry() {
   static const Registry instance = [] {
     Registry r;
     registerMassModels(r);
+    registerKinematicsModels(r);
+    registerForceModels(r);
+    registerKineticsModels(r);
+    registerImpactModels(r);
+    registerProjectileModels(r);
+    registerCannonModels(r);
+    registerRelativityModels(r);
     return r;
   }();
   return instance;

@@ -11,7 +11,7 @@
 
 namespace impetus::cli {
 
-int demoCarDriverFuel() {
+int demoCarDriverFuel(const DemoOptions& /*options*/) {
   constexpr double g = 9.8; // the book's value in chapter 1
   struct Item {
     const char* name;

@@ -1,6 +1,9 @@
 #include "demos/demos.hpp"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <fstream>
 
 #include <functional>
 #include <vector>
@@ -11,7 +14,7 @@ namespace {
 struct Demo {
   const char* name;
   const char* summary;
-  std::function<int()> run;
+  std::function<int(const DemoOptions&)> run;
 };
 
 const std::vector<Demo>& demos() {
@@ -20,13 +23,33 @@ const std::vector<Demo>& demos() {
        demoCarDriverFuel},
       {"tumbling-box", "torque-free rotation of a box about its intermediate axis (ch. 1, 11): it flips",
        demoTumblingBox},
+      {"cannon", "the book's cannon (ch. 2): a shell in vacuum at a target box, from direction cosines", demoCannon},
+      {"cannon2", "the book's Cannon2 (ch. 4): the cannon with linear drag and wind, book's and correct wind",
+       demoCannon2},
+      {"explosion", "the book's kinematic particle explosion (ch. 2): spawn, fly, fade", demoExplosion},
+      {"magnus", "the book's Magnus demo (ch. 6), corrected: a spinning ball curves", demoMagnus},
   };
   return all;
 }
 
 } // namespace
 
-int runDemo(const std::string& name, bool list) {
+void writeCsv(const DemoOptions& options, const std::string& fileName, const std::string& header,
+              const std::vector<std::vector<double>>& rows) {
+  if (!options.outDir) {
+    return;
+  }
+  std::filesystem::create_directories(*options.outDir);
+  const std::filesystem::path path = *options.outDir / fileName;
+  std::ofstream out(path);
+  out << header << '\n';
+  for (const std::vector<double>& row : rows) {
+    out << fmt::format("{}", fmt::join(row, ",")) << '\n';
+  }
+  fmt::print("wrote {} ({} rows)\n", path.string(), rows.size());
+}
+
+int runDemo(const std::string& name, bool list, const DemoOptions& options) {
   if (list) {
     for (const Demo& d : demos()) {
       fmt::print("{:<18} {}\n", d.name, d.summary);
@@ -37,14 +60,14 @@ int runDemo(const std::string& name, bool list) {
     int status = 0;
     for (const Demo& d : demos()) {
       fmt::print("== {} ==\n", d.name);
-      status |= d.run();
+      status |= d.run(options);
       fmt::print("\n");
     }
     return status;
   }
   for (const Demo& d : demos()) {
     if (name == d.name) {
-      return d.run();
+      return d.run(options);
     }
   }
   fmt::print(stderr, "error: unknown demo '{}' (impetus demo --list lists them)\n", name);

@@ -1,15 +1,35 @@
-// `impetus demo`: headless demos that print what they show. The samples app replaces them
-// with interactive versions later; these stay as a smoke test of the whole stack.
+// `impetus demo`: headless demos that print what they show and, given --out DIR, write their
+// trajectories as CSV. The samples app replaces them with interactive versions later; these
+// stay as a smoke test of the whole stack.
 #pragma once
 
+#include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace impetus::cli {
 
-/// Runs the named demo ("" = the flagship demo); exit status 0, or 2 for an unknown name.
-int runDemo(const std::string& name, bool list);
+struct DemoOptions {
+  /// Where to write CSV files; none: print only.
+  std::optional<std::filesystem::path> outDir;
+};
 
-int demoCarDriverFuel();
-int demoTumblingBox();
+/// Writes `rows` under `header` (comma-separated column names) to outDir/fileName when an
+/// output directory was given, creating it; prints the path written. Numbers are written with
+/// full round-trip precision.
+void writeCsv(const DemoOptions& options, const std::string& fileName, const std::string& header,
+              const std::vector<std::vector<double>>& rows);
+
+/// Runs the named demo ("" = all of them); exit status 0, or 2 for an unknown name.
+int runDemo(const std::string& name, bool list, const DemoOptions& options);
+
+// One function per demo (demos/<name>.cpp).
+int demoCarDriverFuel(const DemoOptions& options);
+int demoTumblingBox(const DemoOptions& options);
+int demoCannon(const DemoOptions& options);
+int demoCannon2(const DemoOptions& options);
+int demoExplosion(const DemoOptions& options);
+int demoMagnus(const DemoOptions& options);
 
 } // namespace impetus::cli

@@ -10,6 +10,8 @@
 
 #include <fmt/core.h>
 
+#include <vector>
+
 namespace impetus::cli {
 namespace {
 
@@ -44,7 +46,7 @@ State rk4(const State& s, const Vec3d& inertia, double h) {
 
 } // namespace
 
-int demoTumblingBox() {
+int demoTumblingBox(const DemoOptions& options) {
   const double mass = 0.5;           // kg
   const Box box{{0.16, 0.08, 0.02}}; // a phone-sized slab, m
   const Mat33d tensor = inertiaTensor(box, mass);
@@ -62,6 +64,7 @@ int demoTumblingBox() {
              mass, inertia.x, inertia.y, inertia.z);
   fmt::print("spun at 2 rev/s about y (intermediate axis) with a 0.01 rad/s wobble; RK4, dt = 1 ms\n\n");
   fmt::print("{:>6} {:>10} {:>10} {:>10} {:>14}\n", "t s", "wx", "wy", "wz", "body y . up");
+  std::vector<std::vector<double>> rows;
   int flips = 0;
   double previousY = s.w.y;
   double maxEnergyError = 0.0;
@@ -74,6 +77,9 @@ int demoTumblingBox() {
     previousY = s.w.y;
     maxEnergyError = std::fmax(maxEnergyError, std::abs(energy(s) - e0) / e0);
     maxMomentumError = std::fmax(maxMomentumError, length(momentum(s) - l0) / length(l0));
+    if (i % 10 == 0) {
+      rows.push_back({i * dt, s.w.x, s.w.y, s.w.z, s.q.w, s.q.x, s.q.y, s.q.z});
+    }
     if (i % 500 == 0) {
       fmt::print("{:>6.2f} {:>10.4f} {:>10.4f} {:>10.4f} {:>14.4f}\n", i * dt, s.w.x, s.w.y, s.w.z,
                  rotate(s.q, Vec3d::unitY()).y);
@@ -82,6 +88,7 @@ int demoTumblingBox() {
   fmt::print("\nthe spin axis reversed {} times in {} s\n", flips, steps * dt);
   fmt::print("largest relative drift: kinetic energy {:.2e}, angular momentum {:.2e}\n", maxEnergyError,
              maxMomentumError);
+  writeCsv(options, "tumbling-box.csv", "t,wx,wy,wz,qw,qx,qy,qz", rows);
   return 0;
 }
 

@@ -1,0 +1,7 @@
+#include "calc/calc.hpp"
+
+namespace impetus::cli {
+
+void registerKinematicsModels(Registry& /*registry*/) {}
+
+} // namespace impetus::cli

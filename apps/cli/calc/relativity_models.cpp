@@ -1,0 +1,7 @@
+#include "calc/calc.hpp"
+
+namespace impetus::cli {
+
+void registerRelativityModels(Registry& /*registry*/) {}
+
+} // namespace impetus::cli

@@ -1,0 +1,4 @@
+// Relativistic time (ch. 1, 22): Lorentz factor, GPS clock rates.
+#pragma once
+
+namespace impetus {} // namespace impetus

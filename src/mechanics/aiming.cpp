@@ -1,0 +1,1 @@
+#include <impetus/mechanics/aiming.hpp>

@@ -1,0 +1,3 @@
+#include <impetus/mechanics/aerodynamics.hpp>
+
+#include <gtest/gtest.h>

@@ -1,0 +1,3 @@
+#include <impetus/mechanics/aiming.hpp>
+
+#include <gtest/gtest.h>

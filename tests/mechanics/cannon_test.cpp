@@ -1,0 +1,3 @@
+#include <impetus/mechanics/cannon.hpp>
+
+#include <gtest/gtest.h>

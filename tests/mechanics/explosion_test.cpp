@@ -1,0 +1,3 @@
+#include <impetus/mechanics/explosion.hpp>
+
+#include <gtest/gtest.h>

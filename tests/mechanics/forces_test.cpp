@@ -1,0 +1,3 @@
+#include <impetus/mechanics/forces.hpp>
+
+#include <gtest/gtest.h>

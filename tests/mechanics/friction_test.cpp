@@ -1,0 +1,3 @@
+#include <impetus/mechanics/friction.hpp>
+
+#include <gtest/gtest.h>

@@ -1,0 +1,3 @@
+#include <impetus/mechanics/impact.hpp>
+
+#include <gtest/gtest.h>

@@ -1,0 +1,3 @@
+#include <impetus/mechanics/kinematics.hpp>
+
+#include <gtest/gtest.h>

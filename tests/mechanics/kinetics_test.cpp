@@ -1,0 +1,3 @@
+#include <impetus/mechanics/kinetics.hpp>
+
+#include <gtest/gtest.h>

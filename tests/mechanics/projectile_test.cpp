@@ -1,0 +1,3 @@
+#include <impetus/mechanics/projectile.hpp>
+
+#include <gtest/gtest.h>

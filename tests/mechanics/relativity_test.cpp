@@ -1,0 +1,3 @@
+#include <impetus/mechanics/relativity.hpp>
+
+#include <gtest/gtest.h>

@@ -1,0 +1,3 @@
+#include <impetus/mechanics/rocket.hpp>
+
+#include <gtest/gtest.h>
