@@ -10,8 +10,11 @@
 //   can, as it admits); the ground impact is found by root-finding, not at the first sample below
 //   ground;
 // - Cannon2's wind is, by default, moving air that the drag acts against (F = -C (v - w)); the
-//   book's constant wind force F = -Cw vw (cos gw, 0, sin gw), which ignores the shell's own
-//   velocity, is kept as WindModel::bookConstantForce;
+//   book's separate wind force F = -Cw vw (cos gw, 0, sin gw) with its own coefficient is kept as
+//   WindModel::bookConstantForce. With linear drag the two are the same physics exactly when
+//   Cw = C (moving air adds the constant force C w); with any other Cw the book's shell drifts at
+//   Cw/C times the wind speed, which no air does. Only the moving-air form carries over to
+//   quadratic drag (ch. 6's ball flight), where wind is not a constant force at all;
 // - C = 0 (no drag) is the vacuum limit, computed without the book's division by zero;
 // - pi is pi, not 3.14.
 #pragma once
@@ -51,12 +54,12 @@ enum class WindModel {
 
 /// Air and wind for Cannon2. With dragCoefficient = 0 and no wind, the vacuum model.
 struct Atmosphere {
-  double gravity = 9.81;          ///< m/s^2 (the book uses 9.81 in ch. 2)
-  double dragCoefficient = 0.0;   ///< C, linear drag F = -C v, kg/s (N s/m), >= 0
-  double windSpeed = 0.0;         ///< vw, m/s, >= 0
-  double windDirection = 0.0;     ///< gw: where the wind comes from, in the x-z plane from +x toward
-                                  ///< +z, rad (gw = 0 blows toward -x, as in the book)
-  double windCoefficient = 0.0;   ///< Cw, kg/s: only for WindModel::bookConstantForce
+  double gravity = 9.81;        ///< m/s^2 (the book uses 9.81 in ch. 2)
+  double dragCoefficient = 0.0; ///< C, linear drag F = -C v, kg/s (N s/m), >= 0
+  double windSpeed = 0.0;       ///< vw, m/s, >= 0
+  double windDirection = 0.0;   ///< gw: where the wind comes from, in the x-z plane from +x toward
+                                ///< +z, rad (gw = 0 blows toward -x, as in the book)
+  double windCoefficient = 0.0; ///< Cw, kg/s: only for WindModel::bookConstantForce
   WindModel windModel = WindModel::movingAir;
 };
 
@@ -102,9 +105,9 @@ enum class ShotOutcome { hit, ground, timeout };
 
 struct ShotResult {
   ShotOutcome outcome = ShotOutcome::timeout;
-  double time = 0.0;              ///< s: when the shell entered the target or reached the ground
-  Vec3d position;                 ///< where, m
-  Vec3d velocity;                 ///< with which velocity, m/s
+  double time = 0.0;                  ///< s: when the shell entered the target or reached the ground
+  Vec3d position;                     ///< where, m
+  Vec3d velocity;                     ///< with which velocity, m/s
   std::vector<ShellState> trajectory; ///< samples every time step, ending at the outcome
 };
 
