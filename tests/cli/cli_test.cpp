@@ -240,6 +240,35 @@ TEST(Cli, composite_rejects_malformed_files_naming_the_key) {
                    "parts[0].orientation.axis");
 }
 
+TEST(Cli, cannon_hits_the_default_target_and_aim_reports_unreachable_targets) {
+  const CliRun shot = impetus({"calc", "cannon", "--json"});
+  ASSERT_EQ(shot.status, 0) << shot.err;
+  const json doc = json::parse(shot.out);
+  EXPECT_EQ(doc.at("outputs").at("outcome").at("value"), "hit");
+  // 45 degrees, 50 m/s, from a 2 m barrel: the shell reaches x = 250 (the target's near face)
+  // when (250 - L sin a) / (v sin a) seconds have passed.
+  const double t = (250.0 - 2.0 * std::sqrt(0.5)) / (50.0 * std::sqrt(0.5));
+  EXPECT_NEAR(output(doc, "time"), t, 1e-6);
+  expectUsageError(impetus({"calc", "aim", "--distance", "300", "--speed", "50"}), "--speed = 50");
+  expectUsageError(impetus({"calc", "cannon", "--altitude-deg", "200"}), "--altitude-deg = 200");
+  expectUsageError(impetus({"calc", "cannon2", "--wind-model", "breeze"}), "--wind-model = breeze");
+}
+
+TEST(Cli, demo_writes_trajectory_csv) {
+  const std::string dir = ::testing::TempDir() + "impetus_demo_csv";
+  const CliRun run = impetus({"demo", "cannon", "--out", dir});
+  ASSERT_EQ(run.status, 0) << run.err;
+  std::ifstream csv(dir + "/cannon.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "shot,t,x,y,z,vx,vy,vz");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) {
+    ++rows;
+  }
+  EXPECT_GT(rows, 100);
+}
+
 TEST(Cli, demos_run_and_unknown_demo_exits_two) {
   const CliRun car = impetus({"demo", "car-driver-fuel"});
   EXPECT_EQ(car.status, 0);
