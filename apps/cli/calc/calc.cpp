@@ -21,21 +21,6 @@ struct UsageError {
   std::string message;
 };
 
-double parseNumber(const std::string& name, const std::string& text) {
-  double value = 0.0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  // std::from_chars does not accept a leading '+'; allow it as people type it.
-  if (first != last && *first == '+') {
-    ++first;
-  }
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (text.empty() || ec != std::errc() || ptr != last) {
-    throw UsageError{fmt::format("--{} = '{}': not a number", name, text)};
-  }
-  return value;
-}
-
 ordered_json toJson(const Value& value) {
   return std::visit([](const auto& v) { return ordered_json(v); }, value);
 }
@@ -85,7 +70,13 @@ std::string paramLine(const Param& p) {
     line += fmt::format(" [{}]", p.unit);
   }
   line += fmt::format("  {}", p.help);
-  line += p.defaultValue ? fmt::format(" (default {})", *p.defaultValue) : " (required)";
+  if (!p.defaultValue) {
+    line += " (required)";
+  } else if (p.defaultValue->empty()) {
+    line += " (optional)";
+  } else {
+    line += fmt::format(" (default {})", *p.defaultValue);
+  }
   return line;
 }
 
@@ -193,7 +184,8 @@ void printResult(const Model& model, const Args& args, const Result& result, boo
   }
   fmt::print("{}: {}\n", model.name, model.summary);
   for (const Param& p : model.params) {
-    fmt::print("  {:<22} = {} {}\n", p.name, args.text(p.name), p.unit);
+    const std::string& value = args.text(p.name);
+    fmt::print("  {:<22} = {}\n", p.name, value.empty() ? "(not given)" : value + " " + p.unit);
   }
   fmt::print("results:\n");
   for (const Output& o : result.outputs) {
@@ -232,6 +224,21 @@ std::string asParameterMessage(const Model& model, const Error& e) {
 }
 
 } // namespace
+
+double parseNumber(const std::string& name, const std::string& text) {
+  double value = 0.0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  // std::from_chars does not accept a leading '+'; allow it as people type it.
+  if (first != last && *first == '+') {
+    ++first;
+  }
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (text.empty() || ec != std::errc() || ptr != last) {
+    throw Error(name, fmt::format("--{} = '{}': not a number", name, text));
+  }
+  return value;
+}
 
 double Args::number(const std::string& name) const {
   const auto it = numbers_.find(name);

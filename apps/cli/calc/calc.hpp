@@ -81,6 +81,10 @@ private:
   std::vector<Model> models_;
 };
 
+/// Parses a number the way every parameter is parsed (a leading '+' is allowed; "nan" and
+/// "inf" parse and are left to the model to reject). Throws impetus::Error naming --name.
+[[nodiscard]] double parseNumber(const std::string& name, const std::string& text);
+
 /// Every model of the library, in a fixed order.
 [[nodiscard]] const Registry& registry();
 
@@ -97,6 +101,5 @@ void registerImpactModels(Registry& registry);
 void registerProjectileModels(Registry& registry);
 void registerCannonModels(Registry& registry);
 void registerRelativityModels(Registry& registry);
-
 
 } // namespace impetus::cli

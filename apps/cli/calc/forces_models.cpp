@@ -19,58 +19,6 @@ namespace {
 
 constexpr const char* topic = "forces (ch. 3)";
 
-/// A text parameter holding an optional number: empty means "not given".
-std::optional<double> optionalNumber(const Args& args, const std::string& name) {
-  const std::string& text = args.text(name);
-  if (text.empty()) {
-    return std::nullopt;
-  }
-  double value = 0.0;
-  const char* first = text.data() + (text.front() == '+' ? 1 : 0);
-  const auto [ptr, ec] = std::from_chars(first, text.data() + text.size(), value);
-  if (ec != std::errc() || ptr != text.data() + text.size()) {
-    throw Error(name, "--" + name + " = '" + text + "': not a number");
-  }
-  return value;
-}
-
-/// "x,y,z" (commas or spaces) as a vector.
-Vec3d vectorArg(const Args& args, const std::string& name) {
-  std::string text = args.text(name);
-  std::replace(text.begin(), text.end(), ',', ' ');
-  double c[3] = {0.0, 0.0, 0.0};
-  const char* p = text.data();
-  const char* end = text.data() + text.size();
-  int count = 0;
-  while (true) {
-    while (p != end && *p == ' ') {
-      ++p;
-    }
-    if (p == end) {
-      break;
-    }
-    double v = 0.0;
-    const auto [next, ec] = std::from_chars(p, end, v);
-    if (ec != std::errc() || count == 3 || (next != end && *next != ' ')) {
-      count = -1;
-      break;
-    }
-    c[count++] = v;
-    p = next;
-  }
-  if (count != 3) {
-    throw Error(name, "--" + name + " = '" + args.text(name) + "': expected three numbers x,y,z");
-  }
-  return {c[0], c[1], c[2]};
-}
-
-/// As calc output, with negative zeros (from negating zero components) shown as 0.
-Vector outputVector(const Vec3d& v) { return toVector(v + Vec3d{}); }
-
-Param vectorInput(std::string name, std::string unit, std::string help, std::optional<std::string> def) {
-  return {std::move(name), std::move(unit), std::move(help) + " as x,y,z", std::move(def), ParamKind::text};
-}
-
 Param gravityParam() { return {"gravity", "m/s^2", "gravitational acceleration g", "9.80665"}; }
 
 // ---- Friction coefficients: from --material or given directly --------------------------------
@@ -142,11 +90,11 @@ Result weightModel(const Args& a) {
 }
 
 Result dragForce(const Args& a) {
-  const Vec3d v = vectorArg(a, "velocity");
-  const Vec3d wind = vectorArg(a, "fluid-velocity");
+  const Vec3d v = vector3(a, "velocity");
+  const Vec3d wind = vector3(a, "fluid-velocity");
   const Vec3d f = fluidDragForce(v, a.number("density"), a.number("area"), a.number("drag-coefficient"), wind);
   Result r;
-  r.add("force", outputVector(f), "N", "-1/2 rho A Cd |v - w| (v - w)");
+  r.add("force", toVector(f), "N", "-1/2 rho A Cd |v - w| (v - w)");
   r.add("magnitude", length(f), "N");
   r.add("relative_speed", length(v - wind), "m/s", "|v - w|, speed through the fluid");
   r.add("drag_constant", quadraticDragConstant(a.number("density"), a.number("area"), a.number("drag-coefficient")),
@@ -155,8 +103,8 @@ Result dragForce(const Args& a) {
 }
 
 Result idealDrag(const Args& a) {
-  const Vec3d v = vectorArg(a, "velocity");
-  const Vec3d wind = vectorArg(a, "fluid-velocity");
+  const Vec3d v = vector3(a, "velocity");
+  const Vec3d wind = vector3(a, "fluid-velocity");
   const std::string& law = a.text("law");
   Vec3d f;
   if (law == "linear") {
@@ -167,7 +115,7 @@ Result idealDrag(const Args& a) {
     throw Error("law", "--law = '" + law + "': expected linear or quadratic");
   }
   Result r;
-  r.add("force", outputVector(f), "N", law == "linear" ? "-C (v - w)" : "-C |v - w| (v - w)");
+  r.add("force", toVector(f), "N", law == "linear" ? "-C (v - w)" : "-C |v - w| (v - w)");
   r.add("magnitude", length(f), "N");
   return r;
 }
@@ -202,14 +150,14 @@ Result buoyancy(const Args& a) {
 
 Result springDamper(const Args& a) {
   const SpringDamper s{a.number("stiffness"), a.number("damping"), a.number("rest-length")};
-  const Vec3d p1 = vectorArg(a, "position1");
-  const Vec3d v1 = vectorArg(a, "velocity1");
-  const Vec3d p2 = vectorArg(a, "position2");
-  const Vec3d v2 = vectorArg(a, "velocity2");
+  const Vec3d p1 = vector3(a, "position1");
+  const Vec3d v1 = vector3(a, "velocity1");
+  const Vec3d p2 = vector3(a, "position2");
+  const Vec3d v2 = vector3(a, "velocity2");
   const Vec3d f = springDamperForce(s, p1, v1, p2, v2);
   Result r;
-  r.add("force_on_1", outputVector(f), "N");
-  r.add("force_on_2", outputVector(-f), "N", "equal and opposite");
+  r.add("force_on_1", toVector(f), "N");
+  r.add("force_on_2", toVector(-f), "N", "equal and opposite");
   r.add("length", length(p1 - p2), "m", "|p1 - p2|");
   r.add("extension", length(p1 - p2) - s.restLength, "m", "length - rest length (negative: compressed)");
   r.add("power", dot(f, v1 - v2), "W", "F1 . (v1 - v2): the rate of spring energy change plus damper loss");
@@ -220,11 +168,11 @@ Result springDamper(const Args& a) {
 }
 
 Result torqueModel(const Args& a) {
-  const Vec3d arm = vectorArg(a, "arm");
-  const Vec3d force = vectorArg(a, "force");
+  const Vec3d arm = vector3(a, "arm");
+  const Vec3d force = vector3(a, "force");
   const Vec3d m = torque(arm, force);
   Result r;
-  r.add("torque", outputVector(m), "N m", "r x F");
+  r.add("torque", toVector(m), "N m", "r x F");
   r.add("magnitude", length(m), "N m", "F d");
   const double f = length(force);
   if (f > 0.0) {
@@ -308,8 +256,8 @@ void registerForceModels(Registry& registry) {
   registry.add({"drag-force",
                 topic,
                 "fluid drag F = -1/2 rho A Cd |v - w| (v - w), w the fluid's velocity",
-                {vectorInput("velocity", "m/s", "velocity of the body", std::nullopt),
-                 vectorInput("fluid-velocity", "m/s", "velocity of the fluid (wind, current)", "0,0,0"),
+                {vectorParam("velocity", "m/s", "velocity of the body", std::nullopt),
+                 vectorParam("fluid-velocity", "m/s", "velocity of the fluid (wind, current)", "0,0,0"),
                  {"density", "kg/m^3", "fluid density (air at sea level by default)", "1.225"},
                  {"area", "m^2", "reference (frontal) area", std::nullopt},
                  {"drag-coefficient", "", "Cd", std::nullopt}},
@@ -317,8 +265,8 @@ void registerForceModels(Registry& registry) {
   registry.add({"ideal-drag-force",
                 topic,
                 "idealized drag: linear F = -C (v - w) or quadratic F = -C |v - w| (v - w)",
-                {vectorInput("velocity", "m/s", "velocity of the body", std::nullopt),
-                 vectorInput("fluid-velocity", "m/s", "velocity of the fluid (wind, current)", "0,0,0"),
+                {vectorParam("velocity", "m/s", "velocity of the body", std::nullopt),
+                 vectorParam("fluid-velocity", "m/s", "velocity of the fluid (wind, current)", "0,0,0"),
                  {"drag-constant", "N s/m or kg/m", "C (N s/m for linear, kg/m for quadratic)", std::nullopt},
                  {"law", "", "linear or quadratic", "quadratic", ParamKind::text}},
                 idealDrag});
@@ -349,17 +297,17 @@ void registerForceModels(Registry& registry) {
                 {{"stiffness", "N/m", "ks", std::nullopt},
                  {"damping", "N s/m", "kd", "0"},
                  {"rest-length", "m", "r", std::nullopt},
-                 vectorInput("position1", "m", "point 1", std::nullopt),
-                 vectorInput("velocity1", "m/s", "velocity of point 1", "0,0,0"),
-                 vectorInput("position2", "m", "point 2", std::nullopt),
-                 vectorInput("velocity2", "m/s", "velocity of point 2", "0,0,0")},
+                 vectorParam("position1", "m", "point 1", std::nullopt),
+                 vectorParam("velocity1", "m/s", "velocity of point 1", "0,0,0"),
+                 vectorParam("position2", "m", "point 2", std::nullopt),
+                 vectorParam("velocity2", "m/s", "velocity of point 2", "0,0,0")},
                 springDamper});
   registry.add(
       {"torque",
        topic,
        "M = r x F",
-       {vectorInput("arm", "m", "r, from the axis (or centre of gravity) to the point of application", std::nullopt),
-        vectorInput("force", "N", "F", std::nullopt)},
+       {vectorParam("arm", "m", "r, from the axis (or centre of gravity) to the point of application", std::nullopt),
+        vectorParam("force", "N", "F", std::nullopt)},
        torqueModel});
   std::vector<Param> frictionInputs{{"mass", "kg", "mass of the block", std::nullopt},
                                     {"push-force", "N", "horizontal push through the centre of gravity", std::nullopt},

@@ -17,63 +17,6 @@ namespace {
 
 constexpr const char* topic = "kinematics (ch. 2)";
 
-/// A text parameter holding an optional number: empty means "unknown".
-std::optional<double> optionalNumber(const Args& args, const std::string& name) {
-  const std::string& text = args.text(name);
-  if (text.empty()) {
-    return std::nullopt;
-  }
-  double value = 0.0;
-  const char* first = text.data() + (text.front() == '+' ? 1 : 0);
-  const auto [ptr, ec] = std::from_chars(first, text.data() + text.size(), value);
-  if (ec != std::errc() || ptr != text.data() + text.size()) {
-    throw Error(name, "--" + name + " = '" + text + "': not a number");
-  }
-  return value;
-}
-
-/// "x,y,z" (commas or spaces) as a vector.
-Vec3d vectorParam(const Args& args, const std::string& name) {
-  std::string text = args.text(name);
-  std::replace(text.begin(), text.end(), ',', ' ');
-  double c[3] = {0.0, 0.0, 0.0};
-  const char* p = text.data();
-  const char* end = text.data() + text.size();
-  int count = 0;
-  while (true) {
-    while (p != end && *p == ' ') {
-      ++p;
-    }
-    if (p == end) {
-      break;
-    }
-    double v = 0.0;
-    const auto [next, ec] = std::from_chars(p, end, v);
-    if (ec != std::errc() || count == 3 || (next != end && *next != ' ')) {
-      count = -1;
-      break;
-    }
-    c[count++] = v;
-    p = next;
-  }
-  if (count != 3) {
-    throw Error(name, "--" + name + " = '" + args.text(name) + "': expected three numbers x,y,z");
-  }
-  return {c[0], c[1], c[2]};
-}
-
-/// As calc output, with negative zeros (from negating zero components) shown as 0.
-Vector outputVector(const Vec3d& v) { return toVector(v + Vec3d{}); }
-
-Param vectorInput(std::string name, std::string unit, std::string help, std::optional<std::string> def) {
-  return {std::move(name), std::move(unit), std::move(help) + " as x,y,z", std::move(def), ParamKind::text};
-}
-
-Param optionalParam(std::string name, std::string unit, std::string help) {
-  return {std::move(name), std::move(unit), std::move(help) + " (leave out when unknown)", std::string{},
-          ParamKind::text};
-}
-
 Result constantAcceleration(const Args& a) {
   ConstantAccelerationKnowns k;
   k.initialVelocity = optionalNumber(a, "initial-velocity");
@@ -140,16 +83,16 @@ Result circle(const Args& a) {
 
 Result pointOnBody(const Args& a) {
   BodyMotion body;
-  body.velocity = vectorParam(a, "velocity");
-  body.acceleration = vectorParam(a, "acceleration");
-  body.angularVelocity = vectorParam(a, "angular-velocity");
-  body.angularAcceleration = vectorParam(a, "angular-acceleration");
-  const PointMotion p = pointOnRotatingBody(body, vectorParam(a, "offset"));
+  body.velocity = vector3(a, "velocity");
+  body.acceleration = vector3(a, "acceleration");
+  body.angularVelocity = vector3(a, "angular-velocity");
+  body.angularAcceleration = vector3(a, "angular-acceleration");
+  const PointMotion p = pointOnRotatingBody(body, vector3(a, "offset"));
   Result r;
-  r.add("velocity", outputVector(p.velocity), "m/s", "v_cg + omega x r");
-  r.add("acceleration", outputVector(p.acceleration), "m/s^2", "a_cg + alpha x r + omega x (omega x r)");
-  r.add("tangential_acceleration", outputVector(p.tangentialAcceleration), "m/s^2", "alpha x r");
-  r.add("centripetal_acceleration", outputVector(p.centripetalAcceleration), "m/s^2", "omega x (omega x r)");
+  r.add("velocity", toVector(p.velocity), "m/s", "v_cg + omega x r");
+  r.add("acceleration", toVector(p.acceleration), "m/s^2", "a_cg + alpha x r + omega x (omega x r)");
+  r.add("tangential_acceleration", toVector(p.tangentialAcceleration), "m/s^2", "alpha x r");
+  r.add("centripetal_acceleration", toVector(p.centripetalAcceleration), "m/s^2", "omega x (omega x r)");
   return r;
 }
 
@@ -191,11 +134,11 @@ void registerKinematicsModels(Registry& registry) {
   registry.add({"point-on-rotating-body",
                 topic,
                 "v_P = v_cg + omega x r, a_P = a_cg + alpha x r + omega x (omega x r) (plane: use z components)",
-                {vectorInput("velocity", "m/s", "velocity of the centre of gravity", "0,0,0"),
-                 vectorInput("acceleration", "m/s^2", "acceleration of the centre of gravity", "0,0,0"),
-                 vectorInput("angular-velocity", "rad/s", "omega", std::nullopt),
-                 vectorInput("angular-acceleration", "rad/s^2", "alpha", "0,0,0"),
-                 vectorInput("offset", "m", "r, from the centre of gravity to the point, world axes", std::nullopt)},
+                {vectorParam("velocity", "m/s", "velocity of the centre of gravity", "0,0,0"),
+                 vectorParam("acceleration", "m/s^2", "acceleration of the centre of gravity", "0,0,0"),
+                 vectorParam("angular-velocity", "rad/s", "omega", std::nullopt),
+                 vectorParam("angular-acceleration", "rad/s^2", "alpha", "0,0,0"),
+                 vectorParam("offset", "m", "r, from the centre of gravity to the point, world axes", std::nullopt)},
                 pointOnBody});
 }
 

@@ -1,3 +1,0 @@
-#include <impetus/mechanics/friction.hpp>
-
-#include <gtest/gtest.h>
