@@ -1,5 +1,6 @@
 #include <impetus/core/mass_properties.hpp>
 #include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
 
 #include <string>
 #include <vector>
@@ -11,20 +12,6 @@ std::string partField(std::size_t index, std::string_view field) {
   std::string name = "parts[";
   name.append(std::to_string(index)).append("].").append(field);
   return name;
-}
-
-void requireFiniteVector(const Vec3d& v, std::string_view field) {
-  requireFinite(v.x, std::string(field) + ".x");
-  requireFinite(v.y, std::string(field) + ".y");
-  requireFinite(v.z, std::string(field) + ".z");
-}
-
-void requireFiniteMatrix(const Mat33d& m, std::string_view field) {
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) {
-      requireFinite(m(r, c), std::string(field) + "(" + std::to_string(r) + "," + std::to_string(c) + ")");
-    }
-  }
 }
 
 double requireTotalMass(double total) {
@@ -45,7 +32,7 @@ double parallelAxis(double inertiaAboutCenterOfMass, double mass, double distanc
 
 Mat33d parallelAxis(const Mat33d& inertiaAboutCenterOfMass, double mass, const Vec3d& offset) {
   requireNonNegative(mass, "mass");
-  requireFiniteVector(offset, "offset");
+  requireFinite(offset, "offset");
   return inertiaAboutCenterOfMass + (Mat33d::identity() * lengthSquared(offset) - outer(offset, offset)) * mass;
 }
 
@@ -72,9 +59,9 @@ MassProperties3 combine(std::span<const MassPart> parts) {
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const MassPart& part = parts[i];
     requireNonNegative(part.mass, partField(i, "mass"));
-    requireFiniteVector(part.position, partField(i, "position"));
-    requireFiniteMatrix(part.inertia, partField(i, "inertia"));
-    requireFiniteMatrix(part.orientation, partField(i, "orientation"));
+    requireFinite(part.position, partField(i, "position"));
+    requireFinite(part.inertia, partField(i, "inertia"));
+    requireFinite(part.orientation, partField(i, "orientation"));
     total += part.mass;
     firstMoment += part.position * part.mass;
   }
@@ -90,13 +77,13 @@ MassProperties3 combine(std::span<const MassPart> parts) {
 }
 
 PrincipalInertia principalAxes(const Mat33d& inertia) {
-  requireFiniteMatrix(inertia, "inertia");
+  requireFinite(inertia, "inertia");
   const SymmetricEigen3d eigen = symmetricEigen(inertia);
   return {eigen.values, eigen.vectors};
 }
 
 void requirePhysicalInertia(const Mat33d& inertia, std::string_view field) {
-  requireFiniteMatrix(inertia, field);
+  requireFinite(inertia, field);
   const double scale = std::fmax(1e-300, std::abs(trace(inertia)));
   const double tol = 1e-9 * scale;
   for (int r = 0; r < 3; ++r) {

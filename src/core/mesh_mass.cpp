@@ -1,5 +1,6 @@
 #include <impetus/core/mesh_mass.hpp>
 #include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
 
 #include <algorithm>
 #include <string>
@@ -40,10 +41,7 @@ MassProperties3 meshMassProperties(std::span<const Vec3d> vertices, std::span<co
     throwInvalid("triangles.size", static_cast<double>(triangles.size()), "a closed mesh needs at least 4 triangles");
   }
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    const std::string name = "vertices[" + std::to_string(i) + "]";
-    requireFinite(vertices[i].x, name + ".x");
-    requireFinite(vertices[i].y, name + ".y");
-    requireFinite(vertices[i].z, name + ".z");
+    requireFinite(vertices[i], "vertices[" + std::to_string(i) + "]");
   }
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     for (std::uint32_t index : triangles[i]) {

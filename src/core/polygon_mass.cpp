@@ -1,5 +1,6 @@
 #include <impetus/core/polygon_mass.hpp>
 #include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
 
 #include <string>
 
@@ -11,8 +12,7 @@ PolygonMass polygonMass(std::span<const Vec2d> vertices, double density) {
     throwInvalid("vertices.size", static_cast<double>(vertices.size()), "a polygon needs at least 3 vertices");
   }
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    requireFinite(vertices[i].x, "vertices[" + std::to_string(i) + "].x");
-    requireFinite(vertices[i].y, "vertices[" + std::to_string(i) + "].y");
+    requireFinite(vertices[i], "vertices[" + std::to_string(i) + "]");
   }
   // Work relative to the first vertex so that polygons far from the origin keep their precision.
   const Vec2d origin = vertices[0];

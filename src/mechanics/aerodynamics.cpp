@@ -1,6 +1,7 @@
 #include <impetus/error.hpp>
 #include <impetus/integrate/rk4.hpp>
 #include <impetus/math/scalar.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/mechanics/aerodynamics.hpp>
 
 #include <algorithm>
@@ -10,12 +11,6 @@
 
 namespace impetus {
 namespace {
-
-void requireFiniteVector(const Vec3d& v, std::string_view field) {
-  if (!isFinite(v)) {
-    throwInvalid(field, !std::isfinite(v.x) ? v.x : (!std::isfinite(v.y) ? v.y : v.z), "must be a finite vector");
-  }
-}
 
 /// sin(x)/x, 1 at 0.
 double sinc(double x) {
@@ -72,8 +67,8 @@ void validate(const FlightConditions& c) {
   requireNonNegative(c.airDensity, "airDensity");
   requirePositive(c.dynamicViscosity, "dynamicViscosity");
   requireNonNegative(c.gravity, "gravity");
-  requireFiniteVector(c.wind, "wind");
-  requireFiniteVector(c.spin, "spin");
+  requireFinite(c.wind, "wind");
+  requireFinite(c.spin, "spin");
   requireFinite(c.groundHeight, "groundHeight");
 }
 
@@ -184,7 +179,7 @@ double sphereDragCoefficient(double reynolds) {
 }
 
 Vec3d dragForce(const Vec3d& relativeVelocity, double airDensity, double area, double dragCoefficient) {
-  requireFiniteVector(relativeVelocity, "relativeVelocity");
+  requireFinite(relativeVelocity, "relativeVelocity");
   requireNonNegative(airDensity, "airDensity");
   requirePositive(area, "area");
   requireNonNegative(dragCoefficient, "dragCoefficient");
@@ -212,8 +207,8 @@ double idealMagnusCoefficient(double airDensity, double radius, double spinRate)
 
 Vec3d magnusForce(const Vec3d& relativeVelocity, const Vec3d& spin, double radius, double airDensity, LiftModel model,
                   double liftCoefficient) {
-  requireFiniteVector(relativeVelocity, "relativeVelocity");
-  requireFiniteVector(spin, "spin");
+  requireFinite(relativeVelocity, "relativeVelocity");
+  requireFinite(spin, "spin");
   requirePositive(radius, "radius");
   requireNonNegative(airDensity, "airDensity");
   requireFinite(liftCoefficient, "liftCoefficient");
@@ -278,7 +273,7 @@ BallProperties golfBall() {
 Vec3d ballAcceleration(const BallProperties& ball, const FlightConditions& conditions, const Vec3d& velocity) {
   validate(ball);
   validate(conditions);
-  requireFiniteVector(velocity, "velocity");
+  requireFinite(velocity, "velocity");
   return accelerationUnchecked(ball, conditions, velocity);
 }
 
@@ -287,8 +282,8 @@ BallFlight simulateBallFlight(const BallProperties& ball, const FlightConditions
                               const FlightSettings& settings) {
   validate(ball);
   validate(conditions);
-  requireFiniteVector(launchPosition, "launchPosition");
-  requireFiniteVector(launchVelocity, "launchVelocity");
+  requireFinite(launchPosition, "launchPosition");
+  requireFinite(launchVelocity, "launchVelocity");
   requirePositive(settings.timeStep, "timeStep");
   requirePositive(settings.maxTime, "maxTime");
   if (launchPosition.y < conditions.groundHeight) {

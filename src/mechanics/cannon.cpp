@@ -1,5 +1,6 @@
 #include <impetus/error.hpp>
 #include <impetus/math/scalar.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/mechanics/cannon.hpp>
 
 #include <algorithm>
@@ -122,9 +123,7 @@ ShotResult fireAtTarget(const ShellFlight& flight, const TargetBox& target, doub
   requireNonNegative(target.size.x, "target.size.x");
   requireNonNegative(target.size.y, "target.size.y");
   requireNonNegative(target.size.z, "target.size.z");
-  if (!isFinite(target.center)) {
-    throwInvalid("target.center", std::nan(""), "must be finite");
-  }
+  requireFinite(target.center, "target.center");
   const Vec3d lo = target.center - target.size * 0.5;
   const Vec3d hi = target.center + target.size * 0.5;
 

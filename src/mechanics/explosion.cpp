@@ -1,5 +1,6 @@
 #include <impetus/error.hpp>
 #include <impetus/math/scalar.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/mechanics/explosion.hpp>
 
 #include <algorithm>
@@ -9,8 +10,7 @@ namespace impetus {
 
 KinematicExplosion::KinematicExplosion(const ExplosionSettings& settings)
     : origin_(settings.origin), gravity_(requireFinite(settings.gravity, "gravity")) {
-  requireFinite(settings.origin.x, "origin.x");
-  requireFinite(settings.origin.y, "origin.y");
+  requireFinite(settings.origin, "origin");
   requireNonNegative(settings.speed, "speed");
   requirePositive(settings.life, "life");
   requireNonNegative(settings.spread, "spread");

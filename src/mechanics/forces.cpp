@@ -1,4 +1,5 @@
 #include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/mechanics/forces.hpp>
 
 #include <cmath>
@@ -6,18 +7,6 @@
 
 namespace impetus {
 namespace {
-
-void requireFiniteVector(const Vec3d& v, std::string_view field) {
-  if (!isFinite(v)) {
-    throwInvalid(field, !std::isfinite(v.x) ? v.x : (!std::isfinite(v.y) ? v.y : v.z), "must be finite");
-  }
-}
-
-void requireFiniteVector(const Vec2d& v, std::string_view field) {
-  if (!isFinite(v)) {
-    throwInvalid(field, std::isfinite(v.x) ? v.y : v.x, "must be finite");
-  }
-}
 
 void requireSpring(const SpringDamper& s) {
   requireNonNegative(s.stiffness, "stiffness");
@@ -45,8 +34,8 @@ Vec3d gravitationalForce(double mass1, const Vec3d& position1, double mass2, con
                          double gravitationalConstant) {
   requireNonNegative(mass1, "mass1");
   requireNonNegative(mass2, "mass2");
-  requireFiniteVector(position1, "position1");
-  requireFiniteVector(position2, "position2");
+  requireFinite(position1, "position1");
+  requireFinite(position2, "position2");
   requirePositive(gravitationalConstant, "gravitationalConstant");
   const Vec3d d = position2 - position1;
   const double r = length(d);
@@ -79,16 +68,16 @@ double gravityAtAltitude(double altitude, double bodyMass, double bodyRadius, do
 // ---- Drag -----------------------------------------------------------------------------------------
 
 Vec3d linearDragForce(const Vec3d& velocity, double dragConstant, const Vec3d& fluidVelocity) {
-  requireFiniteVector(velocity, "velocity");
+  requireFinite(velocity, "velocity");
   requireNonNegative(dragConstant, "dragConstant");
-  requireFiniteVector(fluidVelocity, "fluidVelocity");
+  requireFinite(fluidVelocity, "fluidVelocity");
   return (velocity - fluidVelocity) * -dragConstant;
 }
 
 Vec3d quadraticDragForce(const Vec3d& velocity, double dragConstant, const Vec3d& fluidVelocity) {
-  requireFiniteVector(velocity, "velocity");
+  requireFinite(velocity, "velocity");
   requireNonNegative(dragConstant, "dragConstant");
-  requireFiniteVector(fluidVelocity, "fluidVelocity");
+  requireFinite(fluidVelocity, "fluidVelocity");
   const Vec3d relative = velocity - fluidVelocity;
   return relative * (-dragConstant * length(relative));
 }
@@ -151,10 +140,10 @@ namespace {
 
 template <class V> V springDamperForceImpl(const SpringDamper& s, const V& p1, const V& v1, const V& p2, const V& v2) {
   requireSpring(s);
-  requireFiniteVector(p1, "position1");
-  requireFiniteVector(v1, "velocity1");
-  requireFiniteVector(p2, "position2");
-  requireFiniteVector(v2, "velocity2");
+  requireFinite(p1, "position1");
+  requireFinite(v1, "velocity1");
+  requireFinite(p2, "position2");
+  requireFinite(v2, "velocity2");
   const V separation = p1 - p2;
   const double len = length(separation);
   const V direction = normalize(separation); // zero vector when the points coincide
@@ -181,22 +170,22 @@ Vec2d springDamperForce(const SpringDamper& spring, const Vec2d& position1, cons
 // ---- Torque -------------------------------------------------------------------------------------------
 
 Vec3d torque(const Vec3d& arm, const Vec3d& force) {
-  requireFiniteVector(arm, "arm");
-  requireFiniteVector(force, "force");
+  requireFinite(arm, "arm");
+  requireFinite(force, "force");
   return cross(arm, force);
 }
 
 double torque(const Vec2d& arm, const Vec2d& force) {
-  requireFiniteVector(arm, "arm");
-  requireFiniteVector(force, "force");
+  requireFinite(arm, "arm");
+  requireFinite(force, "force");
   return cross(arm, force);
 }
 
 ForceResultant resultant(std::span<const AppliedForce> forces, const Vec3d& about) {
-  requireFiniteVector(about, "about");
+  requireFinite(about, "about");
   ForceResultant r{};
   for (const AppliedForce& f : forces) {
-    requireFiniteVector(f.point, "point");
+    requireFinite(f.point, "point");
     r.force += f.force;
     r.torque += torque(f.point - about, f.force);
   }
@@ -204,10 +193,10 @@ ForceResultant resultant(std::span<const AppliedForce> forces, const Vec3d& abou
 }
 
 ForceResultant2 resultant(std::span<const AppliedForce2> forces, const Vec2d& about) {
-  requireFiniteVector(about, "about");
+  requireFinite(about, "about");
   ForceResultant2 r{};
   for (const AppliedForce2& f : forces) {
-    requireFiniteVector(f.point, "point");
+    requireFinite(f.point, "point");
     r.force += f.force;
     r.torque += torque(f.point - about, f.force);
   }

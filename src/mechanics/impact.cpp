@@ -1,5 +1,6 @@
 #include <impetus/error.hpp>
 #include <impetus/math/symmetric_eigen.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/mechanics/impact.hpp>
 
 #include <algorithm>
@@ -24,20 +25,9 @@ double inverseOfMass(double mass, std::string_view field) {
   return std::isinf(mass) ? 0.0 : 1.0 / mass;
 }
 
-void requireFiniteVector(const Vec3d& v, const std::string& field) {
-  requireFinite(v.x, field + ".x");
-  requireFinite(v.y, field + ".y");
-  requireFinite(v.z, field + ".z");
-}
-
-void requireFiniteVector(const Vec2d& v, const std::string& field) {
-  requireFinite(v.x, field + ".x");
-  requireFinite(v.y, field + ".y");
-}
-
 /// The unit normal; throws when it has no direction.
 template <class V> V unitNormal(const V& normal) {
-  requireFiniteVector(normal, "normal");
+  requireFinite(normal, "normal");
   const V n = normalize(normal);
   if (lengthSquared(n) == 0.0) {
     throwInvalid("normal", length(normal), "must have a non-zero length");
@@ -73,17 +63,17 @@ void requireInverseInertia(const Mat33d& m, const std::string& field) {
 void requireBody(const ImpactBody& body, const std::string& name) {
   requireNonNegative(body.inverseMass, name + ".inverseMass");
   requireInverseInertia(body.inverseInertiaWorld, name + ".inverseInertiaWorld");
-  requireFiniteVector(body.velocity, name + ".velocity");
-  requireFiniteVector(body.angularVelocity, name + ".angularVelocity");
-  requireFiniteVector(body.offset, name + ".offset");
+  requireFinite(body.velocity, name + ".velocity");
+  requireFinite(body.angularVelocity, name + ".angularVelocity");
+  requireFinite(body.offset, name + ".offset");
 }
 
 void requireBody(const ImpactBody2D& body, const std::string& name) {
   requireNonNegative(body.inverseMass, name + ".inverseMass");
   requireNonNegative(body.inverseInertia, name + ".inverseInertia");
-  requireFiniteVector(body.velocity, name + ".velocity");
+  requireFinite(body.velocity, name + ".velocity");
   requireFinite(body.angularVelocity, name + ".angularVelocity");
-  requireFiniteVector(body.offset, name + ".offset");
+  requireFinite(body.offset, name + ".offset");
 }
 
 bool isImmovable(const ImpactBody& body) {
@@ -242,8 +232,8 @@ ParticleImpactResult resolveParticleImpact(const ImpactParticle& body1, const Im
   if (w == 0.0) {
     throwInvalid("body2.inverseMass", body2.inverseMass, "both bodies are immovable");
   }
-  requireFiniteVector(body1.velocity, "body1.velocity");
-  requireFiniteVector(body2.velocity, "body2.velocity");
+  requireFinite(body1.velocity, "body1.velocity");
+  requireFinite(body2.velocity, "body2.velocity");
   const Vec3d n = unitNormal(normal);
   requireRestitution(restitution);
   const double vn = dot(body1.velocity - body2.velocity, n);
@@ -263,8 +253,8 @@ ParticleImpactResult2D resolveParticleImpact(const ImpactParticle2D& body1, cons
   if (w == 0.0) {
     throwInvalid("body2.inverseMass", body2.inverseMass, "both bodies are immovable");
   }
-  requireFiniteVector(body1.velocity, "body1.velocity");
-  requireFiniteVector(body2.velocity, "body2.velocity");
+  requireFinite(body1.velocity, "body1.velocity");
+  requireFinite(body2.velocity, "body2.velocity");
   const Vec2d n = unitNormal(normal);
   requireRestitution(restitution);
   const double vn = dot(body1.velocity - body2.velocity, n);

@@ -1,4 +1,5 @@
 #include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/mechanics/kinematics.hpp>
 
 #include <algorithm>
@@ -332,28 +333,14 @@ CircularMotion circularMotion(double radius, double angularVelocity, double angu
 
 // ---- Rigid-body kinematics -------------------------------------------------------------------------
 
-namespace {
-
-void requireFiniteVector(const Vec2d& v, std::string_view field) {
-  if (!isFinite(v)) {
-    throwInvalid(field, std::isfinite(v.x) ? v.y : v.x, "must be finite");
-  }
-}
-
-void requireFiniteVector(const Vec3d& v, std::string_view field) {
-  if (!isFinite(v)) {
-    throwInvalid(field, !std::isfinite(v.x) ? v.x : (!std::isfinite(v.y) ? v.y : v.z), "must be finite");
-  }
-}
-
-} // namespace
+namespace {} // namespace
 
 PlanarPointMotion pointOnRotatingBody(const PlanarBodyMotion& body, const Vec2d& offset) {
-  requireFiniteVector(body.velocity, "velocity");
-  requireFiniteVector(body.acceleration, "acceleration");
+  requireFinite(body.velocity, "velocity");
+  requireFinite(body.acceleration, "acceleration");
   requireFinite(body.angularVelocity, "angularVelocity");
   requireFinite(body.angularAcceleration, "angularAcceleration");
-  requireFiniteVector(offset, "offset");
+  requireFinite(offset, "offset");
   const double w = body.angularVelocity;
   PlanarPointMotion p{};
   p.velocity = body.velocity + cross(w, offset);
@@ -364,11 +351,11 @@ PlanarPointMotion pointOnRotatingBody(const PlanarBodyMotion& body, const Vec2d&
 }
 
 PointMotion pointOnRotatingBody(const BodyMotion& body, const Vec3d& offset) {
-  requireFiniteVector(body.velocity, "velocity");
-  requireFiniteVector(body.acceleration, "acceleration");
-  requireFiniteVector(body.angularVelocity, "angularVelocity");
-  requireFiniteVector(body.angularAcceleration, "angularAcceleration");
-  requireFiniteVector(offset, "offset");
+  requireFinite(body.velocity, "velocity");
+  requireFinite(body.acceleration, "acceleration");
+  requireFinite(body.angularVelocity, "angularVelocity");
+  requireFinite(body.angularAcceleration, "angularAcceleration");
+  requireFinite(offset, "offset");
   const Vec3d& w = body.angularVelocity;
   PointMotion p{};
   p.velocity = body.velocity + cross(w, offset);

@@ -429,7 +429,7 @@ TEST(BallFlight, bad_input_names_the_parameter) {
   expectErrorField([&] { (void)simulateBallFlight(b, c, {}, {10.0, 10.0, 0.0}); }, "radius");
   FlightConditions bad = c;
   bad.wind = {NAN, 0.0, 0.0};
-  expectErrorField([&] { (void)simulateBallFlight(baseball(), bad, {}, {10.0, 10.0, 0.0}); }, "wind");
+  expectErrorField([&] { (void)simulateBallFlight(baseball(), bad, {}, {10.0, 10.0, 0.0}); }, "wind.x");
   bad = c;
   bad.airDensity = -1.0;
   expectErrorField([&] { (void)simulateBallFlight(baseball(), bad, {}, {10.0, 10.0, 0.0}); }, "airDensity");

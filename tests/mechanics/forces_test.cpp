@@ -90,7 +90,7 @@ TEST(FluidDragForce, acts_on_the_velocity_relative_to_the_fluid) {
   EXPECT_EQ(thrownField([] { static_cast<void>(fluidDragForce({1.0, 0.0, 0.0}, 1.2, 0.0, 0.5)); }), "area");
   EXPECT_EQ(thrownField([] { static_cast<void>(fluidDragForce({1.0, 0.0, 0.0}, -1.2, 1.0, 0.5)); }), "density");
   EXPECT_EQ(thrownField([] { static_cast<void>(linearDragForce({1.0, 0.0, 0.0}, -1.0)); }), "dragConstant");
-  EXPECT_EQ(thrownField([] { static_cast<void>(quadraticDragForce({nan, 0.0, 0.0}, 1.0)); }), "velocity");
+  EXPECT_EQ(thrownField([] { static_cast<void>(quadraticDragForce({nan, 0.0, 0.0}, 1.0)); }), "velocity.x");
 }
 
 // ---- Pressure and buoyancy -----------------------------------------------------------------------
@@ -247,7 +247,7 @@ TEST(SpringDamperForce, coincident_points_give_zero_force_not_nan) {
   EXPECT_EQ(thrownField([] {
               static_cast<void>(springDamperForce({1.0, 1.0, 1.0}, Vec3d{nan, 0.0, 0.0}, {}, Vec3d{}, {}));
             }),
-            "position1");
+            "position1.x");
 }
 
 // ---- Torque --------------------------------------------------------------------------------------
@@ -283,7 +283,7 @@ TEST(TorqueAndResultant, cross_product_moment_arm_and_transfer_between_points) {
     EXPECT_EQ(length(r.force), 0.0);
     EXPECT_NEAR(r.torque, 8.0, 1e-14);
   }
-  EXPECT_EQ(thrownField([] { static_cast<void>(torque(Vec3d{nan, 0.0, 0.0}, Vec3d{})); }), "arm");
+  EXPECT_EQ(thrownField([] { static_cast<void>(torque(Vec3d{nan, 0.0, 0.0}, Vec3d{})); }), "arm.x");
 }
 
 // ---- Friction ------------------------------------------------------------------------------------

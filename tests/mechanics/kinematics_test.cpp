@@ -344,10 +344,10 @@ TEST(RigidBodyKinematics, plane_and_spatial_forms_agree_and_reject_nan) {
   // Hand values: v = (1, 2) + 3 (-0.7, 0.4) = (-1.1, 3.2).
   EXPECT_NEAR(p.velocity.x, -1.1, 1e-15);
   EXPECT_NEAR(p.velocity.y, 3.2, 1e-15);
-  EXPECT_EQ(thrownField([] { static_cast<void>(pointOnRotatingBody(PlanarBodyMotion{}, {nan, 0.0})); }), "offset");
+  EXPECT_EQ(thrownField([] { static_cast<void>(pointOnRotatingBody(PlanarBodyMotion{}, {nan, 0.0})); }), "offset.x");
   BodyMotion bad;
   bad.angularVelocity = {0.0, nan, 0.0};
-  EXPECT_EQ(thrownField([&] { static_cast<void>(pointOnRotatingBody(bad, {1.0, 0.0, 0.0})); }), "angularVelocity");
+  EXPECT_EQ(thrownField([&] { static_cast<void>(pointOnRotatingBody(bad, {1.0, 0.0, 0.0})); }), "angularVelocity.y");
 }
 
 } // namespace

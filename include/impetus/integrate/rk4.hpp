@@ -14,7 +14,7 @@ namespace impetus {
 
 /// x(t + h) from x(t), where dx/dt = f(t, x).
 template <typename State, typename Scalar, typename Derivative>
-  requires std::invocable<Derivative&, Scalar, const State&>
+requires std::invocable<Derivative&, Scalar, const State&>
 [[nodiscard]] State rk4Step(Derivative&& f, Scalar t, const State& x, Scalar h) {
   const Scalar half = h / Scalar(2);
   const State k1 = f(t, x);

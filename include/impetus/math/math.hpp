@@ -9,5 +9,6 @@
 #include <impetus/math/symmetric_eigen.hpp>
 #include <impetus/math/transform2.hpp>
 #include <impetus/math/transform3.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/math/vec2.hpp>
 #include <impetus/math/vec3.hpp>
