@@ -154,6 +154,28 @@ ImpactBody embed(const ImpactBody2D& b) {
   return body;
 }
 
+/// J = -(1 + e)(v_r . n) / (1/m1 + 1/m2) along the unit normal, for 2D or 3D particles.
+template <class Result, class Particle, class V>
+Result resolveParticles(const Particle& body1, const Particle& body2, const V& normal, double restitution) {
+  requireNonNegative(body1.inverseMass, "body1.inverseMass");
+  requireNonNegative(body2.inverseMass, "body2.inverseMass");
+  const double w = body1.inverseMass + body2.inverseMass;
+  if (w == 0.0) {
+    throwInvalid("body2.inverseMass", body2.inverseMass, "both bodies are immovable");
+  }
+  requireFinite(body1.velocity, "body1.velocity");
+  requireFinite(body2.velocity, "body2.velocity");
+  const V n = unitNormal(normal);
+  requireRestitution(restitution);
+  const double vn = dot(body1.velocity - body2.velocity, n);
+  if (!(vn < 0.0)) {
+    return {body1.velocity, body2.velocity, 0.0, 0.0};
+  }
+  const double j = -(1.0 + restitution) * vn / w;
+  return {body1.velocity + n * (j * body1.inverseMass), body2.velocity - n * (j * body2.inverseMass), j,
+          0.5 / w * (1.0 - restitution * restitution) * vn * vn};
+}
+
 } // namespace
 
 double linearImpulse(double mass, double velocityChange) {
@@ -226,44 +248,12 @@ Impact1DResult resolveImpact1D(double mass1, double velocity1, double mass2, dou
 
 ParticleImpactResult resolveParticleImpact(const ImpactParticle& body1, const ImpactParticle& body2,
                                            const Vec3d& normal, double restitution) {
-  requireNonNegative(body1.inverseMass, "body1.inverseMass");
-  requireNonNegative(body2.inverseMass, "body2.inverseMass");
-  const double w = body1.inverseMass + body2.inverseMass;
-  if (w == 0.0) {
-    throwInvalid("body2.inverseMass", body2.inverseMass, "both bodies are immovable");
-  }
-  requireFinite(body1.velocity, "body1.velocity");
-  requireFinite(body2.velocity, "body2.velocity");
-  const Vec3d n = unitNormal(normal);
-  requireRestitution(restitution);
-  const double vn = dot(body1.velocity - body2.velocity, n);
-  if (!(vn < 0.0)) {
-    return {body1.velocity, body2.velocity, 0.0, 0.0};
-  }
-  const double j = -(1.0 + restitution) * vn / w;
-  return {body1.velocity + n * (j * body1.inverseMass), body2.velocity - n * (j * body2.inverseMass), j,
-          0.5 / w * (1.0 - restitution * restitution) * vn * vn};
+  return resolveParticles<ParticleImpactResult>(body1, body2, normal, restitution);
 }
 
 ParticleImpactResult2D resolveParticleImpact(const ImpactParticle2D& body1, const ImpactParticle2D& body2,
                                              const Vec2d& normal, double restitution) {
-  requireNonNegative(body1.inverseMass, "body1.inverseMass");
-  requireNonNegative(body2.inverseMass, "body2.inverseMass");
-  const double w = body1.inverseMass + body2.inverseMass;
-  if (w == 0.0) {
-    throwInvalid("body2.inverseMass", body2.inverseMass, "both bodies are immovable");
-  }
-  requireFinite(body1.velocity, "body1.velocity");
-  requireFinite(body2.velocity, "body2.velocity");
-  const Vec2d n = unitNormal(normal);
-  requireRestitution(restitution);
-  const double vn = dot(body1.velocity - body2.velocity, n);
-  if (!(vn < 0.0)) {
-    return {body1.velocity, body2.velocity, 0.0, 0.0};
-  }
-  const double j = -(1.0 + restitution) * vn / w;
-  return {body1.velocity + n * (j * body1.inverseMass), body2.velocity - n * (j * body2.inverseMass), j,
-          0.5 / w * (1.0 - restitution * restitution) * vn * vn};
+  return resolveParticles<ParticleImpactResult2D>(body1, body2, normal, restitution);
 }
 
 ImpactResult resolveImpact(const ImpactBody& body1, const ImpactBody& body2, const Vec3d& normal, double restitution,

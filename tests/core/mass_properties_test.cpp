@@ -6,6 +6,8 @@
 #include <impetus/error.hpp>
 #include <impetus/math/quat.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -122,15 +124,6 @@ void expectVecNear(const Vec3d& actual, const Vec3d& expected, double tol) {
   EXPECT_NEAR(actual.x, expected.x, tol);
   EXPECT_NEAR(actual.y, expected.y, tol);
   EXPECT_NEAR(actual.z, expected.z, tol);
-}
-
-template <class F> std::string thrownField(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.field();
-  }
-  return "<nothing thrown>";
 }
 
 // A rotation about a skew axis, so that every element of a rotated tensor is non-zero.

@@ -6,6 +6,8 @@
 #include <impetus/error.hpp>
 #include <impetus/math/quat.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,15 +27,6 @@ struct Mesh {
   std::vector<Vec3d> vertices;
   std::vector<TriangleIndices> triangles;
 };
-
-template <class F> std::string thrownField(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.field();
-  }
-  return "<nothing thrown>";
-}
 
 double maxAbs(const Mat33d& m) {
   double r = 0.0;

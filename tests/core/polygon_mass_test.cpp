@@ -4,6 +4,8 @@
 #include <impetus/core/polygon_mass.hpp>
 #include <impetus/error.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,15 +18,6 @@ namespace impetus {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-
-template <class F> std::string thrownField(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.field();
-  }
-  return "<nothing thrown>";
-}
 
 std::vector<Vec2d> rectangle(Vec2d corner, double width, double height) {
   return {corner, corner + Vec2d{width, 0.0}, corner + Vec2d{width, height}, corner + Vec2d{0.0, height}};

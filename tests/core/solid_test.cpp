@@ -6,6 +6,8 @@
 #include <impetus/core/solid.hpp>
 #include <impetus/error.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -103,16 +105,6 @@ void expectMatchesIntegral(const Solid& solid, const Integral& integral, double 
 
 Vec3d spherical(double r, double theta, double phi) {
   return {r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi), r * std::cos(theta)};
-}
-
-// Runs `f`, returning the field() of the impetus::Error it throws, or a marker if none.
-template <class F> std::string thrownField(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.field();
-  }
-  return "<nothing thrown>";
 }
 
 // --- Thick solids against volume integrals -------------------------------------------------

@@ -10,6 +10,8 @@
 #include <impetus/mechanics/aerodynamics.hpp>
 #include <impetus/mechanics/projectile.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,15 +22,6 @@ namespace impetus {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-
-template <class F> void expectErrorField(F&& f, const std::string& field) {
-  try {
-    f();
-    ADD_FAILURE() << "no impetus::Error thrown; expected one naming " << field;
-  } catch (const Error& e) {
-    EXPECT_EQ(e.field(), field) << e.what();
-  }
-}
 
 // ---- Reynolds number and the air constants ---------------------------------------------------
 

@@ -8,6 +8,8 @@
 #include <impetus/mechanics/forces.hpp>
 #include <impetus/mechanics/friction.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -21,15 +23,6 @@ namespace impetus {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-template <class F> std::string thrownField(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.field();
-  }
-  return "<nothing thrown>";
-}
 
 // ---- Gravitation -----------------------------------------------------------------------------
 

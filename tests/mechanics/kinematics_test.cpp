@@ -7,6 +7,8 @@
 #include <impetus/math/quat.hpp>
 #include <impetus/mechanics/kinematics.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,15 +19,6 @@ namespace impetus {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-template <class F> std::string thrownField(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.field();
-  }
-  return "<nothing thrown>";
-}
 
 // A motion with constant acceleration, sampled from its definition.
 struct Sample {

@@ -7,6 +7,8 @@
 #include <impetus/mechanics/forces.hpp>
 #include <impetus/mechanics/kinetics.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -18,15 +20,6 @@ namespace impetus {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-template <class F> std::string thrownField(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.field();
-  }
-  return "<nothing thrown>";
-}
 
 // ---- Ship ---------------------------------------------------------------------------------------
 

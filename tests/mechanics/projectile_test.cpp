@@ -6,6 +6,8 @@
 #include <impetus/integrate/rk4.hpp>
 #include <impetus/mechanics/projectile.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,15 +20,6 @@ namespace {
 constexpr double pi = std::numbers::pi;
 constexpr double g = 9.8; // the book's chapter-6 value, pinned
 double deg(double d) { return d * pi / 180.0; }
-
-template <class F> void expectErrorField(F&& f, const std::string& field) {
-  try {
-    f();
-    ADD_FAILURE() << "no impetus::Error thrown; expected one naming " << field;
-  } catch (const Error& e) {
-    EXPECT_EQ(e.field(), field) << e.what();
-  }
-}
 
 // Closed forms evaluate a handful of operations: 1e-12 relative is ~100 ulp of slack.
 constexpr double tight = 1e-12;

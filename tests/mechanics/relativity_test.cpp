@@ -5,6 +5,8 @@
 #include <impetus/error.hpp>
 #include <impetus/mechanics/relativity.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,15 +16,6 @@ namespace impetus {
 namespace {
 
 constexpr double c = constants::speedOfLight;
-
-template <class F> void expectErrorField(F&& f, const std::string& field) {
-  try {
-    f();
-    ADD_FAILURE() << "no impetus::Error thrown; expected one naming " << field;
-  } catch (const Error& e) {
-    EXPECT_EQ(e.field(), field) << e.what();
-  }
-}
 
 TEST(Relativity, lorentz_factor_matches_the_spec_oracles) {
   // Ex 1.2 [C], given to 8 significant digits: +-5e-8.

@@ -5,6 +5,8 @@
 #include <impetus/integrate/rk4.hpp>
 #include <impetus/mechanics/rocket.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,15 +15,6 @@
 
 namespace impetus {
 namespace {
-
-template <class F> void expectErrorField(F&& f, const std::string& field) {
-  try {
-    f();
-    ADD_FAILURE() << "no impetus::Error thrown; expected one naming " << field;
-  } catch (const Error& e) {
-    EXPECT_EQ(e.field(), field) << e.what();
-  }
-}
 
 struct State {
   double y, v, m;
