@@ -67,7 +67,7 @@ Result impulse(const Args& a) {
             "time to cover the distance at constant force: 2 d / (v- + v+)");
     }
     if (average > std::fmax(std::abs(before), std::abs(after))) {
-      r.notes.push_back(fmt::format(
+      r.notes.emplace_back(fmt::format(
           "inconsistent inputs: covering {} m in {} s needs an average speed of {:.6g} m/s, faster than both the "
           "initial and the final speed, which no push that only accelerates can do (the book's bullet, Ex 5.1, "
           "has this flaw; its 0.150 kg mass is also implausible: 150 grains = 9.72 g)",
@@ -84,7 +84,7 @@ Result restitution(const Args& a) {
   r.add("restitution", e, "", "e = -(v1+ - v2+) / (v1- - v2-)");
   r.add("relative_energy_kept", e * e, "", "fraction of the kinetic energy of relative normal motion kept: e^2");
   if (e > 1.0) {
-    r.notes.push_back("e > 1: the bodies separate faster than they met; energy was added (not a passive impact)");
+    r.notes.emplace_back("e > 1: the bodies separate faster than they met; energy was added (not a passive impact)");
   }
   return r;
 }
@@ -113,7 +113,7 @@ Result impact1D(const Args& a) {
     r.add("kinetic_energy_after", 0.5 * (m1 * i.velocity1 * i.velocity1 + m2 * i.velocity2 * i.velocity2), "J");
   }
   if (i.impulse == 0.0) {
-    r.notes.push_back("no impact: body 1 (behind) is not faster than body 2 (ahead), so they do not close");
+    r.notes.emplace_back("no impact: body 1 (behind) is not faster than body 2 (ahead), so they do not close");
   }
   return r;
 }
@@ -134,7 +134,7 @@ Result impactSpheres2D(const Args& a) {
   r.add("impulse", i.impulse, "N s", "along n on body 1, -n on body 2");
   r.add("kinetic_energy_lost", i.kineticEnergyLost, "J");
   if (i.impulse == 0.0) {
-    r.notes.push_back("no impact: the bodies are not approaching along the normal");
+    r.notes.emplace_back("no impact: the bodies are not approaching along the normal");
   }
   return r;
 }
@@ -251,7 +251,7 @@ Result rigidImpact2D(const Args& a) {
   r.add("tangential_velocity_after", cross(n, after), "m/s");
   r.add("kinetic_energy_lost", i.kineticEnergyLost, "J");
   if (i.normalImpulse == 0.0) {
-    r.notes.push_back("no impact: the contact points are not approaching along the normal");
+    r.notes.emplace_back("no impact: the contact points are not approaching along the normal");
   }
   return r;
 }

@@ -60,8 +60,8 @@ Result projectile(const Args& a) {
     r.add("best_angle_deg", radToDeg(best), "deg", "launch angle of the longest range to this target height");
     r.add("max_range", vacuumFlight({launch.speed, best, launch.launchHeight, launch.gravity}, target).range, "m");
   }
-  r.notes.push_back("vacuum, flat ground, constant g (the book's tables 6-1 to 6-4); "
-                    "a drop from a vehicle is --angle-deg 0 with --launch-height");
+  r.notes.emplace_back("vacuum, flat ground, constant g (the book's tables 6-1 to 6-4); "
+                       "a drop from a vehicle is --angle-deg 0 with --launch-height");
   return r;
 }
 
@@ -71,8 +71,8 @@ Result terminalVelocity(const Args& a) {
   Result r;
   r.add("terminal_velocity", v, "m/s", "sqrt(2 W / (Cd rho A))");
   r.add("terminal_velocity_kmh", v * 3.6, "km/h");
-  r.notes.push_back("the book's Table 6-5 skydiver rows agree with this; its baseball, golf-ball and raindrop rows "
-                    "do not follow from its own inputs (golf ball: 116 km/h printed, 122.9 computed)");
+  r.notes.emplace_back("the book's Table 6-5 skydiver rows agree with this; its baseball, golf-ball and raindrop rows "
+                       "do not follow from its own inputs (golf ball: 116 km/h printed, 122.9 computed)");
   return r;
 }
 
@@ -110,7 +110,7 @@ Result sphereDrag(const Args& a) {
   r.add("drag_coefficient", sphereDragCoefficient(re), "", "smooth sphere, Morrison (2013) correlation");
   r.add("regime", dragRegime(re));
   if (re > sphereDragCorrelationLimit) {
-    r.notes.push_back("above Re = 1e6 the correlation is not fitted: Cd is held at its value at 1e6");
+    r.notes.emplace_back("above Re = 1e6 the correlation is not fitted: Cd is held at its value at 1e6");
   }
   return r;
 }
@@ -135,8 +135,8 @@ Result magnus(const Args& a) {
   r.add("weight_fraction", fit / weight);
   r.add("magnus_force_idealized", ideal, "N", "the book's pi^2 rho r^3 w v");
   r.add("idealized_weight_fraction", ideal / weight);
-  r.notes.push_back("the book's idealized formula overpredicts: for its 45 m/s, 30 rev/s pitch it gives 3.5x the "
-                    "ball's weight where the book quotes up to 33 %");
+  r.notes.emplace_back("the book's idealized formula overpredicts: for its 45 m/s, 30 rev/s pitch it gives 3.5x the "
+                       "ball's weight where the book quotes up to 33 %");
   return r;
 }
 
@@ -204,10 +204,10 @@ Result ballFlight(const Args& a) {
     r.add("vacuum_range", vacuumFlight({speed, angle, height, c.gravity}, 0.0).range, "m", "no air, for comparison");
   }
   if (!f.landed) {
-    r.notes.push_back("still in the air after 60 s");
+    r.notes.emplace_back("still in the air after 60 s");
   }
   if (ball.liftModel == LiftModel::idealizedSphere) {
-    r.notes.push_back("the idealized (book) lift overpredicts about 10x: expect loops at high spin");
+    r.notes.emplace_back("the idealized (book) lift overpredicts about 10x: expect loops at high spin");
   }
   return r;
 }
@@ -230,7 +230,7 @@ Result rocket(const Args& a) {
   if (f.liftsOff) {
     r.add("liftoff_time", f.liftoffTime, "s");
   } else {
-    r.notes.push_back("the thrust never exceeds the weight before burn-out: the rocket stays on the pad");
+    r.notes.emplace_back("the thrust never exceeds the weight before burn-out: the rocket stays on the pad");
   }
   r.add("burnout_time", f.burnoutTime, "s");
   r.add("burnout_mass", f.burnoutMass, "kg");
@@ -238,7 +238,7 @@ Result rocket(const Args& a) {
   r.add("burnout_altitude", f.burnoutAltitude, "m");
   r.add("peak_altitude", f.peakAltitude, "m");
   r.add("peak_time", f.peakTime, "s");
-  r.notes.push_back("vertical flight, constant g, no air resistance (the book's assumptions)");
+  r.notes.emplace_back("vertical flight, constant g, no air resistance (the book's assumptions)");
   return r;
 }
 

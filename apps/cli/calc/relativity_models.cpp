@@ -51,9 +51,9 @@ Result gps(const Args& a) {
         "the same, to the book's 11 decimals");
   r.add("frequency_offset", d.correctedFrequency - in.nominalFrequency, "Hz", "corrected minus nominal");
   r.add("range_error_per_day", d.rangeErrorPerDay, "m", "c times the uncorrected drift over a day");
-  r.notes.push_back("the book's net '+38,640 ns/day' is 45,850 - 7,214 = 38,636 ns/day; the spec's radii give "
-                    "45,718 - 7,214 = 38,505; --orbit-radius 2.656175e7 --ground-potential 62636856 (the rotating "
-                    "geoid) gives the GPS factor 4.4647e-10 = 38,575 ns/day and 10.22999999543 MHz");
+  r.notes.emplace_back("the book's net '+38,640 ns/day' is 45,850 - 7,214 = 38,636 ns/day; the spec's radii give "
+                       "45,718 - 7,214 = 38,505; --orbit-radius 2.656175e7 --ground-potential 62636856 (the rotating "
+                       "geoid) gives the GPS factor 4.4647e-10 = 38,575 ns/day and 10.22999999543 MHz");
   return r;
 }
 

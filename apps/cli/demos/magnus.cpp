@@ -126,7 +126,8 @@ int demoMagnus(const DemoOptions& options) {
   writeCsv(options, "magnus.csv", "t,x,y,vx,vy,x_no_spin,y_no_spin", rows);
 
   std::vector<std::vector<double>> bookRows;
-  for (double t = 0.0; t < 0.97 * singular; t += 0.005) {
+  for (int i = 0; i * 0.005 < 0.97 * singular; ++i) {
+    const double t = i * 0.005;
     const MagnusPlaneState book = bookMagnusFormula(launch, t);
     const MagnusPlaneState exact = magnusClosedForm(launch, t);
     bookRows.push_back({t, book.position.x, book.position.y, exact.position.x, exact.position.y});
