@@ -125,6 +125,42 @@ TEST(Cli, every_model_with_required_parameters_refuses_to_run_without_them) {
   }
 }
 
+/// True when a JSON value holds a null anywhere (nlohmann writes NaN and infinity as null).
+bool containsNull(const json& j) {
+  if (j.is_null()) {
+    return true;
+  }
+  if (j.is_structured()) {
+    return std::any_of(j.begin(), j.end(), [](const json& e) { return containsNull(e); });
+  }
+  return false;
+}
+
+// Every model that needs no input must succeed and produce only finite numbers, or refuse with
+// one usage line.
+TEST(Cli, every_model_runs_on_its_defaults_without_nan) {
+  const json models = json::parse(impetus({"calc", "--list", "--json"}).out);
+  int ran = 0;
+  for (const json& m : models) {
+    const bool needsInput = std::any_of(m.at("params").begin(), m.at("params").end(),
+                                        [](const json& p) { return p.at("required").get<bool>(); });
+    if (needsInput) {
+      continue;
+    }
+    const std::string name = m.at("name").get<std::string>();
+    const CliRun run = impetus({"calc", name, "--json"});
+    if (run.status == 2) { // optional inputs of which some must be given: a usage error, not a crash
+      EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << name << ": " << run.err;
+      continue;
+    }
+    ASSERT_EQ(run.status, 0) << name << ": " << run.err;
+    const json doc = json::parse(run.out);
+    EXPECT_FALSE(containsNull(doc.at("outputs"))) << name << " printed a non-finite value: " << run.out;
+    ++ran;
+  }
+  EXPECT_GE(ran, 8); // cannon, cannon2, billiards, bat-ball, ... run on the book's own inputs
+}
+
 TEST(Cli, solid_sphere_matches_two_fifths_m_r_squared) {
   const CliRun run = impetus({"calc", "inertia-solid-sphere", "--mass", "2", "--radius", "0.5", "--json"});
   ASSERT_EQ(run.status, 0) << run.err;
