@@ -6,4 +6,5 @@
 #include <impetus/integrate/rk4.hpp>
 #include <impetus/math/math.hpp>
 #include <impetus/mechanics/mechanics.hpp>
+#include <impetus/particles/particles.hpp>
 #include <impetus/version.hpp>
