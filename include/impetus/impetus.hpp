@@ -3,7 +3,7 @@
 
 #include <impetus/core/core.hpp>
 #include <impetus/error.hpp>
-#include <impetus/integrate/rk4.hpp>
+#include <impetus/integrate/integrate.hpp>
 #include <impetus/math/math.hpp>
 #include <impetus/mechanics/mechanics.hpp>
 #include <impetus/particles/particles.hpp>

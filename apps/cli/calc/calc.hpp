@@ -101,5 +101,6 @@ void registerImpactModels(Registry& registry);
 void registerProjectileModels(Registry& registry);
 void registerCannonModels(Registry& registry);
 void registerRelativityModels(Registry& registry);
+void registerIntegratorModels(Registry& registry);
 
 } // namespace impetus::cli

@@ -31,6 +31,7 @@ const Registry& registry() {
     registerProjectileModels(r);
     registerCannonModels(r);
     registerRelativityModels(r);
+    registerIntegratorModels(r);
     return r;
   }();
   return instance;

@@ -1,0 +1,22 @@
+// Tolerances of the 2D world, in metres: the world is tuned for moving objects between about
+// 0.1 m and 10 m (as Box2D); these keep collision and the solver robust at that scale.
+#pragma once
+
+namespace impetus::rigid2d {
+
+/// Collision and constraint tolerance: overlaps this small are allowed and not corrected, so
+/// resting contacts do not jitter. m.
+inline constexpr float linearSlop = 0.005f;
+
+/// Contact points are kept while the shapes are closer than this, before they touch, so the
+/// solver stops an approach before it becomes an overlap (speculative contacts). m.
+inline constexpr float speculativeDistance = 4.0f * linearSlop;
+
+/// Fat AABB margin: a moving shape is re-inserted in the broadphase only when it leaves its
+/// enlarged box. m.
+inline constexpr float aabbMargin = 0.1f;
+
+/// Polygons have at most this many vertices (a convex hull of more points is an error).
+inline constexpr int maxPolygonVertices = 8;
+
+} // namespace impetus::rigid2d

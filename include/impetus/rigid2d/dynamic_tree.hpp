@@ -1,0 +1,132 @@
+// A dynamic AABB tree: the broadphase. Leaves hold fattened boxes of shapes (proxies); internal
+// nodes hold the union of their children. Insertion picks the sibling that least increases the
+// total perimeter (the surface-area heuristic, searched by branch and bound), and rotations keep
+// the tree balanced. A proxy whose tight box leaves its fat box is re-inserted; one that moves
+// within it costs nothing.
+#pragma once
+
+#include <impetus/rigid2d/aabb.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace impetus::rigid2d {
+
+class DynamicTree {
+public:
+  static constexpr std::int32_t nullNode = -1;
+
+  /// Adds a proxy with the given (already fattened) box and a user value; returns its id.
+  /// Throws impetus::Error for an invalid box.
+  std::int32_t createProxy(const AABB& box, std::uint64_t userData);
+  void destroyProxy(std::int32_t proxy);
+  /// Moves a proxy to a new fat box (removal and re-insertion).
+  void moveProxy(std::int32_t proxy, const AABB& box);
+  /// Grows the ancestors of a proxy whose box was enlarged in place (cheaper than a move).
+  void enlargeProxy(std::int32_t proxy, const AABB& box);
+
+  [[nodiscard]] const AABB& fatBox(std::int32_t proxy) const { return nodes_[static_cast<std::size_t>(proxy)].box; }
+  [[nodiscard]] std::uint64_t userData(std::int32_t proxy) const {
+    return nodes_[static_cast<std::size_t>(proxy)].userData;
+  }
+  [[nodiscard]] int proxyCount() const noexcept { return proxyCount_; }
+  /// Height of the tree (0 for a single leaf, -1 when empty).
+  [[nodiscard]] int height() const noexcept;
+  /// Sum of the perimeters of the internal nodes over the root's: the quality of the tree.
+  [[nodiscard]] float areaRatio() const noexcept;
+
+  /// Calls `visit(proxy, userData)` for every proxy whose fat box overlaps `box`, in a fixed
+  /// order; the visitor returns false to stop.
+  template <class Visitor> void query(const AABB& box, Visitor&& visit) const;
+
+  /// Calls `visit(proxy, userData, p1, p2)` for proxies whose box the segment p1 -> p2 crosses;
+  /// the visitor returns the new maximum fraction along the segment (0 stops, 1 or the previous
+  /// value continues, a hit's fraction clips the ray), as Box2D's ray-cast callbacks do.
+  template <class Visitor> void rayCast(const Vec2f& p1, const Vec2f& p2, Visitor&& visit) const;
+
+  /// Checks the tree's invariants (parents, heights, boxes containing children); for tests.
+  [[nodiscard]] bool validate() const;
+
+private:
+  struct Node {
+    AABB box;
+    std::uint64_t userData = 0;
+    std::int32_t parent = nullNode; ///< or the next free node
+    std::int32_t child1 = nullNode;
+    std::int32_t child2 = nullNode;
+    std::int32_t height = -1; ///< 0 for leaves, -1 for free nodes
+    [[nodiscard]] bool isLeaf() const noexcept { return child1 == nullNode; }
+  };
+
+  std::int32_t allocateNode();
+  void freeNode(std::int32_t node);
+  void insertLeaf(std::int32_t leaf);
+  void removeLeaf(std::int32_t leaf);
+  std::int32_t balance(std::int32_t node);
+  std::int32_t findBestSibling(const AABB& box) const;
+  Node& node(std::int32_t i) { return nodes_[static_cast<std::size_t>(i)]; }
+  const Node& node(std::int32_t i) const { return nodes_[static_cast<std::size_t>(i)]; }
+  bool validateNode(std::int32_t i) const;
+
+  std::vector<Node> nodes_;
+  std::int32_t root_ = nullNode;
+  std::int32_t freeList_ = nullNode;
+  int proxyCount_ = 0;
+  mutable std::vector<std::int32_t> stack_;
+};
+
+template <class Visitor> void DynamicTree::query(const AABB& box, Visitor&& visit) const {
+  if (root_ == nullNode) {
+    return;
+  }
+  stack_.clear();
+  stack_.push_back(root_);
+  while (!stack_.empty()) {
+    const std::int32_t i = stack_.back();
+    stack_.pop_back();
+    const Node& n = node(i);
+    if (!overlaps(n.box, box)) {
+      continue;
+    }
+    if (n.isLeaf()) {
+      if (!visit(i, n.userData)) {
+        return;
+      }
+    } else {
+      stack_.push_back(n.child2);
+      stack_.push_back(n.child1);
+    }
+  }
+}
+
+template <class Visitor> void DynamicTree::rayCast(const Vec2f& p1, const Vec2f& p2, Visitor&& visit) const {
+  if (root_ == nullNode) {
+    return;
+  }
+  float maxFraction = 1.0f;
+  stack_.clear();
+  stack_.push_back(root_);
+  while (!stack_.empty()) {
+    const std::int32_t i = stack_.back();
+    stack_.pop_back();
+    const Node& n = node(i);
+    const Vec2f end = p1 + (p2 - p1) * maxFraction;
+    if (!segmentOverlaps(n.box, p1, end)) {
+      continue;
+    }
+    if (n.isLeaf()) {
+      const float value = visit(i, n.userData, p1, p2);
+      if (value == 0.0f) {
+        return;
+      }
+      if (value > 0.0f && value < maxFraction) {
+        maxFraction = value;
+      }
+    } else {
+      stack_.push_back(n.child2);
+      stack_.push_back(n.child1);
+    }
+  }
+}
+
+} // namespace impetus::rigid2d

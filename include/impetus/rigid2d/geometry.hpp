@@ -1,0 +1,97 @@
+// The 2D collision shapes, in their body's local frame: circle, capsule, convex polygon (up to
+// 8 vertices, optionally rounded) and segment; their mass properties, bounding boxes and ray
+// casts. Convex polygons are built from points through a convex hull.
+#pragma once
+
+#include <impetus/math/transform2.hpp>
+#include <impetus/rigid2d/aabb.hpp>
+#include <impetus/rigid2d/constants.hpp>
+
+#include <array>
+#include <span>
+
+namespace impetus::rigid2d {
+
+struct Circle {
+  Vec2f center; ///< m, local
+  float radius = 0.5f;
+};
+
+/// A segment with a radius: a stadium. centers are the two ends of its core segment.
+struct Capsule {
+  Vec2f center1;
+  Vec2f center2;
+  float radius = 0.25f;
+};
+
+struct Segment {
+  Vec2f point1;
+  Vec2f point2;
+};
+
+/// A convex polygon, counter-clockwise, with an optional rounding radius (a polygon inflated by
+/// `radius`, as Box2D's rounded polygons). Built only by the functions below, which guarantee
+/// convexity, winding and no collinear or repeated vertices.
+struct Polygon {
+  std::array<Vec2f, maxPolygonVertices> vertices{};
+  std::array<Vec2f, maxPolygonVertices> normals{}; ///< outward unit normal of edge i -> i+1
+  Vec2f centroid;
+  float radius = 0.0f;
+  int count = 0;
+};
+
+/// The convex hull of up to 8 points: counter-clockwise, without duplicate (closer than
+/// linearSlop) or collinear points. Throws impetus::Error naming `points` when there are fewer
+/// than 3 or more than 8 points, a point is not finite, or the hull has no area.
+[[nodiscard]] std::span<const Vec2f> computeHull(std::span<const Vec2f> points, std::array<Vec2f, 8>& storage);
+
+/// A polygon from arbitrary points (their hull) and a rounding radius >= 0.
+[[nodiscard]] Polygon makePolygon(std::span<const Vec2f> points, float radius = 0.0f);
+/// A box of half-widths hx, hy centred on the origin.
+[[nodiscard]] Polygon makeBox(float halfWidth, float halfHeight);
+/// A box of half-widths hx, hy centred at `center`, rotated by `angle` radians.
+[[nodiscard]] Polygon makeOffsetBox(float halfWidth, float halfHeight, const Vec2f& center, float angle);
+
+/// Mass, centre of mass (local) and rotational inertia about the centre of mass.
+struct MassData {
+  float mass = 0.0f;              ///< kg
+  Vec2f center;                   ///< m, local
+  float rotationalInertia = 0.0f; ///< kg m^2, about `center`
+};
+
+/// Mass properties at an areal density (kg/m^2, > 0). A segment has none.
+[[nodiscard]] MassData computeMass(const Circle& shape, float density);
+[[nodiscard]] MassData computeMass(const Capsule& shape, float density);
+[[nodiscard]] MassData computeMass(const Polygon& shape, float density);
+
+/// World bounding boxes.
+[[nodiscard]] AABB computeAABB(const Circle& shape, const Transform2f& xf);
+[[nodiscard]] AABB computeAABB(const Capsule& shape, const Transform2f& xf);
+[[nodiscard]] AABB computeAABB(const Polygon& shape, const Transform2f& xf);
+[[nodiscard]] AABB computeAABB(const Segment& shape, const Transform2f& xf);
+
+/// A ray (segment) p1 -> p2 in the shape's frame and the result of casting it.
+struct RayCastInput {
+  Vec2f origin;
+  Vec2f translation; ///< the ray is origin + t translation, t in [0, maxFraction]
+  float maxFraction = 1.0f;
+};
+struct CastOutput {
+  Vec2f normal; ///< surface normal at the hit
+  Vec2f point;  ///< hit point
+  float fraction = 0.0f;
+  bool hit = false;
+};
+
+/// First hit of the ray on the shape's boundary from outside (a ray starting inside does not hit).
+[[nodiscard]] CastOutput rayCast(const Circle& shape, const RayCastInput& ray);
+[[nodiscard]] CastOutput rayCast(const Capsule& shape, const RayCastInput& ray);
+[[nodiscard]] CastOutput rayCast(const Polygon& shape, const RayCastInput& ray);
+[[nodiscard]] CastOutput rayCast(const Segment& shape, const RayCastInput& ray);
+
+/// Whether a local point is inside the shape.
+[[nodiscard]] bool containsPoint(const Circle& shape, const Vec2f& p);
+[[nodiscard]] bool containsPoint(const Capsule& shape, const Vec2f& p);
+[[nodiscard]] bool containsPoint(const Polygon& shape, const Vec2f& p);
+
+} // namespace impetus::rigid2d

@@ -1,0 +1,129 @@
+#include <impetus/rigid2d/dynamic_tree.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace impetus::rigid2d {
+namespace {
+
+struct Fixture {
+  DynamicTree tree;
+  std::vector<std::int32_t> proxies;
+  std::vector<AABB> boxes;
+  std::mt19937 rng{3};
+
+  AABB randomBox() {
+    std::uniform_real_distribution<float> pos(-50.0f, 50.0f);
+    std::uniform_real_distribution<float> size(0.1f, 3.0f);
+    const Vec2f p{pos(rng), pos(rng)};
+    return {p, p + Vec2f{size(rng), size(rng)}};
+  }
+
+  std::vector<std::uint64_t> query(const AABB& box) const {
+    std::vector<std::uint64_t> hits;
+    tree.query(box, [&](std::int32_t, std::uint64_t user) {
+      hits.push_back(user);
+      return true;
+    });
+    std::sort(hits.begin(), hits.end());
+    return hits;
+  }
+
+  std::vector<std::uint64_t> bruteForce(const AABB& box) const {
+    std::vector<std::uint64_t> hits;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      if (proxies[i] >= 0 && overlaps(boxes[i], box)) {
+        hits.push_back(i);
+      }
+    }
+    return hits;
+  }
+};
+
+TEST(DynamicTree, queries_match_brute_force_through_inserts_moves_and_removals) {
+  Fixture f;
+  for (std::uint64_t i = 0; i < 1000; ++i) {
+    f.boxes.push_back(f.randomBox());
+    f.proxies.push_back(f.tree.createProxy(f.boxes.back(), i));
+  }
+  ASSERT_TRUE(f.tree.validate());
+  // An AVL-balanced tree of 1000 leaves is at most ~1.44 log2(1000) ~ 14 deep.
+  EXPECT_LE(f.tree.height(), 16);
+  for (int round = 0; round < 3; ++round) {
+    for (std::size_t i = 0; i < f.boxes.size(); i += 3) {
+      if (f.proxies[i] >= 0) {
+        f.boxes[i] = f.randomBox();
+        f.tree.moveProxy(f.proxies[i], f.boxes[i]);
+      }
+    }
+    for (std::size_t i = static_cast<std::size_t>(round); i < f.boxes.size(); i += 7) {
+      if (f.proxies[i] >= 0) {
+        f.tree.destroyProxy(f.proxies[i]);
+        f.proxies[i] = -1;
+      }
+    }
+    ASSERT_TRUE(f.tree.validate());
+    for (int q = 0; q < 50; ++q) {
+      const AABB box = enlarge(f.randomBox(), 5.0f);
+      EXPECT_EQ(f.query(box), f.bruteForce(box));
+    }
+  }
+}
+
+TEST(DynamicTree, ray_cast_visits_every_box_the_segment_crosses) {
+  Fixture f;
+  for (std::uint64_t i = 0; i < 500; ++i) {
+    f.boxes.push_back(f.randomBox());
+    f.proxies.push_back(f.tree.createProxy(f.boxes.back(), i));
+  }
+  std::uniform_real_distribution<float> pos(-60.0f, 60.0f);
+  for (int r = 0; r < 50; ++r) {
+    const Vec2f p1{pos(f.rng), pos(f.rng)};
+    const Vec2f p2{pos(f.rng), pos(f.rng)};
+    std::vector<std::uint64_t> visited;
+    f.tree.rayCast(p1, p2, [&](std::int32_t, std::uint64_t user, const Vec2f&, const Vec2f&) {
+      visited.push_back(user);
+      return 1.0f; // keep going
+    });
+    std::sort(visited.begin(), visited.end());
+    std::vector<std::uint64_t> expected;
+    for (std::size_t i = 0; i < f.boxes.size(); ++i) {
+      if (segmentOverlaps(f.boxes[i], p1, p2)) {
+        expected.push_back(i);
+      }
+    }
+    EXPECT_EQ(visited, expected);
+  }
+}
+
+TEST(DynamicTree, same_operations_give_the_same_tree) {
+  Fixture a;
+  Fixture b;
+  for (std::uint64_t i = 0; i < 300; ++i) {
+    const AABB box = a.randomBox();
+    (void)b.randomBox();
+    a.tree.createProxy(box, i);
+    b.tree.createProxy(box, i);
+  }
+  std::vector<std::uint64_t> orderA, orderB;
+  const AABB all{{-100, -100}, {100, 100}};
+  a.tree.query(all, [&](std::int32_t, std::uint64_t u) { return orderA.push_back(u), true; });
+  b.tree.query(all, [&](std::int32_t, std::uint64_t u) { return orderB.push_back(u), true; });
+  EXPECT_EQ(orderA, orderB);
+  EXPECT_EQ(orderA.size(), 300U);
+  EXPECT_EQ(a.tree.areaRatio(), b.tree.areaRatio());
+}
+
+TEST(DynamicTree, rejects_invalid_boxes) {
+  DynamicTree tree;
+  EXPECT_ANY_THROW(tree.createProxy({{1, 1}, {0, 0}}, 0));
+  EXPECT_ANY_THROW(tree.createProxy({{std::nanf(""), 0}, {1, 1}}, 0));
+  EXPECT_ANY_THROW(tree.destroyProxy(5));
+}
+
+} // namespace
+} // namespace impetus::rigid2d
