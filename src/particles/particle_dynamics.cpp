@@ -139,27 +139,35 @@ void solveConstraints(ParticleWorldState& w, float h) {
   std::vector<Vec3f>& before = w.scratch.beforeConstraints;
   before.assign(p.position.begin(), p.position.end());
   const float inverseH2 = 1.0f / (h * h);
-  for (const DistanceConstraint& c : w.constraints) {
-    const std::uint32_t ia = w.slotToDense[c.a.index];
-    const bool anchored = c.b.isNull();
-    const std::uint32_t ib = anchored ? 0 : w.slotToDense[c.b.index];
-    const float wa = p.inverseMass[ia];
-    const float wb = anchored ? 0.0f : p.inverseMass[ib];
-    // XPBD with one iteration per substep: dlambda = -C / (wa + wb + alpha / h^2).
-    const float denominator = wa + wb + c.compliance * inverseH2;
-    if (denominator == 0.0f) {
-      continue;
-    }
-    const Vec3f d = p.position[ia] - (anchored ? c.anchor : p.position[ib]);
-    const float len = length(d);
-    const float violation = len - c.length;
-    if (len == 0.0f || (c.maxOnly && violation <= 0.0f)) {
-      continue;
-    }
-    const Vec3f correction = d * (-violation / (denominator * len));
-    p.position[ia] += correction * wa;
-    if (!anchored) {
-      p.position[ib] -= correction * wb;
+  std::vector<float>& lambda = w.scratch.lambda; // accumulated multipliers of this substep
+  lambda.assign(w.constraints.size(), 0.0f);
+  for (int iteration = 0; iteration < w.settings.constraintIterations; ++iteration) {
+    for (std::size_t k = 0; k < w.constraints.size(); ++k) {
+      const DistanceConstraint& c = w.constraints[k];
+      const std::uint32_t ia = w.slotToDense[c.a.index];
+      const bool anchored = c.b.isNull();
+      const std::uint32_t ib = anchored ? 0 : w.slotToDense[c.b.index];
+      const float wa = p.inverseMass[ia];
+      const float wb = anchored ? 0.0f : p.inverseMass[ib];
+      // XPBD: dlambda = (-C - alpha~ lambda) / (wa + wb + alpha~), alpha~ = alpha / h^2.
+      const float alpha = c.compliance * inverseH2;
+      const float denominator = wa + wb + alpha;
+      if (denominator == 0.0f) {
+        continue;
+      }
+      const Vec3f d = p.position[ia] - (anchored ? c.anchor : p.position[ib]);
+      const float len = length(d);
+      const float violation = len - c.length;
+      if (len == 0.0f || (c.maxOnly && violation <= 0.0f)) {
+        continue;
+      }
+      const float deltaLambda = (-violation - alpha * lambda[k]) / denominator;
+      lambda[k] += deltaLambda;
+      const Vec3f correction = d * (deltaLambda / len);
+      p.position[ia] += correction * wa;
+      if (!anchored) {
+        p.position[ib] -= correction * wb;
+      }
     }
   }
   // The projection moved the particles: their velocities follow (v = dx / h).

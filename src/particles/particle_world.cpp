@@ -31,6 +31,9 @@ void validateSettings(const ParticleWorldSettings& s) {
   if (s.substeps < 1 || s.substeps > 1000) {
     throwInvalid("substeps", s.substeps, "must be between 1 and 1000");
   }
+  if (s.constraintIterations < 1 || s.constraintIterations > 1000) {
+    throwInvalid("constraintIterations", s.constraintIterations, "must be between 1 and 1000");
+  }
   requireNonNegative(s.linearDrag, "linearDrag");
   requireNonNegative(s.dragCoefficient, "dragCoefficient");
   requireNonNegative(s.airDensity, "airDensity");
@@ -341,15 +344,7 @@ void ParticleWorld::step(float dt) {
     throwInvalid("dt", dt, "time step must be in (0, 1] s");
   }
   Impl& w = *impl_;
-  // Ageing and expiry, then emission: new particles start at age 0.
-  for (float& a : w.particles.age) {
-    a += dt;
-  }
-  for (std::size_t i = w.particles.size(); i-- > 0;) {
-    if (w.particles.age[i] >= w.particles.lifetime[i]) {
-      destroyParticle(w.particles.id[i]);
-    }
-  }
+  // Emission first: new particles start at age 0 and this step advances them like the others.
   for (detail::Emitter& e : w.emitters) {
     if (!e.burstDone) {
       e.burstDone = true;
@@ -369,13 +364,23 @@ void ParticleWorld::step(float dt) {
     if (!w.constraints.empty()) {
       detail::solveConstraints(w, h);
     }
-    detail::collideObstacles(w);
+    detail::collideObstacles(w, h);
     if (w.settings.particleCollisions) {
       detail::collideParticles(w);
     }
     w.time += h;
   }
   std::fill(w.particles.userForce.begin(), w.particles.userForce.end(), Vec3f{});
+  // Ageing and expiry last, so that between steps every particle's age is the time it has been
+  // simulated for (its position is where it got to in that time) and is below its lifetime.
+  for (float& a : w.particles.age) {
+    a += dt;
+  }
+  for (std::size_t i = w.particles.size(); i-- > 0;) {
+    if (w.particles.age[i] >= w.particles.lifetime[i]) {
+      destroyParticle(w.particles.id[i]);
+    }
+  }
 }
 
 double ParticleWorld::kineticEnergy() const noexcept {

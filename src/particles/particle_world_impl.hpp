@@ -68,6 +68,7 @@ struct Scratch {
   std::vector<Vec3f> acceleration;
   std::vector<Vec3f> x0, v0, k1x, k1v, k2x, k2v, k3x, k3v, k4x, k4v;
   std::vector<Vec3f> beforeConstraints;
+  std::vector<float> lambda;
   // Spatial hash for particle-particle contacts.
   std::vector<std::uint32_t> cellStart;
   std::vector<std::uint32_t> cellOfParticle;
@@ -109,7 +110,8 @@ void integrate(ParticleWorldState& w, float h);
 void solveConstraints(ParticleWorldState& w, float h);
 
 // particle_contacts.cpp
-void collideObstacles(ParticleWorldState& w);
+/// Pushes particles out of the obstacles and applies restitution and friction; h is the substep.
+void collideObstacles(ParticleWorldState& w, float h);
 void collideParticles(ParticleWorldState& w);
 
 } // namespace impetus::detail

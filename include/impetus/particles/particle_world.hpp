@@ -9,11 +9,15 @@
 //   2. distance constraints are projected (XPBD: one iteration per substep is enough, since many
 //      small substeps converge better than many iterations);
 //   3. particles are pushed out of obstacles and their velocities reflected with restitution and
-//      Coulomb friction; a contact approaching slower than `restThreshold` does not bounce, so a
-//      particle that has come to rest stays at rest (the book's particles micro-bounce forever);
+//      Coulomb friction (the tangential distance friction prevented during the substep is taken
+//      back as well, so static friction holds on a slope); a contact approaching slower than
+//      `restThreshold` does not bounce, so a particle that has come to rest stays at rest (the
+//      book's particles micro-bounce forever);
 //   4. particle-particle contacts (if enabled) from a spatial hash grid, resolved pairwise with
 //      equal and opposite impulses (momentum is conserved to rounding).
-// Emitters spawn and expired particles are destroyed once per step, before the substeps.
+// Emitters spawn once per step, before the substeps; particles age and those past their
+// lifetime are destroyed once per step, after them (so between steps age() is the time a
+// particle has been simulated for, and is below its lifetime).
 // Everything runs in a fixed order: the same inputs give bit-identical results.
 #pragma once
 
@@ -30,6 +34,10 @@ struct ParticleWorldSettings {
   Vec3f gravity{0.0f, -9.81f, 0.0f}; ///< m/s^2
   ParticleIntegrator integrator = ParticleIntegrator::semiImplicitEuler;
   int substeps = 4; ///< per step, >= 1
+  /// XPBD passes over the distance constraints per substep, >= 1. More substeps converge
+  /// better than more iterations (a 10-segment rope stays within 1% of its length at 1/60 s
+  /// with 8 substeps); iterations are the cheaper knob when forces are expensive.
+  int constraintIterations = 1;
 
   // Drag, relative to the air: v_rel = v - wind.
   Vec3f wind;                   ///< uniform air velocity, m/s
