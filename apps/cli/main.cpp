@@ -1,7 +1,8 @@
 // impetus: the command-line tool. `impetus calc` evaluates any model of the library,
-// `impetus demo` runs a headless demo.
+// `impetus demo` runs a headless demo, `impetus run` simulates a scene file.
 #include "calc/calc.hpp"
 #include "demos/demos.hpp"
+#include "run_command.hpp"
 
 #include <impetus/version.hpp>
 
@@ -31,6 +32,15 @@ int main(int argc, char** argv) {
   std::string demoOut;
   demo->add_option("--out", demoOut, "directory to write the demo's CSV files to");
 
+  auto* run = app.add_subcommand(
+      "run", "simulate a particle scene file: impetus run SCENE.json --steps N [--dt H] [--out FILE] [--every K]");
+  impetus::cli::RunOptions runOptions;
+  run->add_option("scene", runOptions.scene, "scene file (JSON, docs/scene-format.md)")->required();
+  run->add_option("--steps", runOptions.steps, "number of steps to take")->required();
+  run->add_option("--dt", runOptions.dt, "time step, s (default 1/60)");
+  run->add_option("--out", runOptions.out, "trajectory file: .csv or .json");
+  run->add_option("--every", runOptions.every, "record every K-th step (default 1)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -52,6 +62,9 @@ int main(int argc, char** argv) {
       options.outDir = demoOut;
     }
     return impetus::cli::runDemo(demoName, demoList, options);
+  }
+  if (run->parsed()) {
+    return impetus::cli::runScene(runOptions);
   }
   return 2;
 }

@@ -1,0 +1,172 @@
+// Reading one JSON object of a scene file: typed, range-checked values whose errors start with
+// the value's JSON path ("particles[3].mass = -1: must be finite and positive"), and a check
+// that rejects the keys nobody asked for. Used by scene_file.cpp.
+#pragma once
+
+#include <impetus/error.hpp>
+#include <impetus/math/vec3.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <set>
+#include <string>
+#include <utility>
+
+namespace impetus::cli::json_fields {
+
+using nlohmann::json;
+
+/// Throws impetus::Error("<field>: <message>").
+[[noreturn]] inline void fail(const std::string& field, const std::string& message) {
+  throw Error(field, field + ": " + message);
+}
+
+/// "where[i]": the path of an array element.
+inline std::string index(const std::string& where, std::size_t i) { return where + "[" + std::to_string(i) + "]"; }
+
+/// Typed values from one JSON object at `where`; it remembers every key asked for (present or
+/// not), and done() rejects the keys nobody asked for, naming the ones it knows.
+class Fields {
+public:
+  Fields(const json& object, std::string where) : object_(object), where_(std::move(where)) {
+    if (!object_.is_object()) {
+      fail(where_, "expected an object, got " + object_.dump());
+    }
+  }
+
+  [[nodiscard]] const std::string& where() const { return where_; }
+  [[nodiscard]] std::string path(const std::string& key) const { return where_.empty() ? key : where_ + "." + key; }
+
+  [[nodiscard]] bool has(const std::string& key) {
+    known_.insert(key);
+    return object_.contains(key);
+  }
+  [[nodiscard]] const json* find(const std::string& key) { return has(key) ? &object_.at(key) : nullptr; }
+  [[nodiscard]] const json& require(const std::string& key) {
+    if (!has(key)) {
+      fail(path(key), "missing");
+    }
+    return object_.at(key);
+  }
+
+  [[nodiscard]] double number(const std::string& key, double fallback) {
+    const json* j = find(key);
+    return j != nullptr ? numberAt(*j, path(key)) : fallback;
+  }
+  [[nodiscard]] double requiredNumber(const std::string& key) { return numberAt(require(key), path(key)); }
+  [[nodiscard]] float positive(const std::string& key, double fallback) {
+    return narrow(requirePositive(number(key, fallback), path(key)), path(key));
+  }
+  [[nodiscard]] float nonNegative(const std::string& key, double fallback) {
+    return narrow(requireNonNegative(number(key, fallback), path(key)), path(key));
+  }
+  [[nodiscard]] float fraction(const std::string& key, double fallback) {
+    const double v = number(key, fallback);
+    if (!(v >= 0.0 && v <= 1.0)) {
+      throwInvalid(path(key), v, "must be in [0, 1]");
+    }
+    return static_cast<float>(v);
+  }
+  [[nodiscard]] float real(const std::string& key, double fallback) { return narrow(number(key, fallback), path(key)); }
+  [[nodiscard]] float requiredReal(const std::string& key) { return narrow(requiredNumber(key), path(key)); }
+  [[nodiscard]] float requiredPositive(const std::string& key) {
+    return narrow(requirePositive(requiredNumber(key), path(key)), path(key));
+  }
+  [[nodiscard]] Vec3f vec3(const std::string& key, const Vec3f& fallback) {
+    const json* j = find(key);
+    return j != nullptr ? vec3At(*j, path(key)) : fallback;
+  }
+  [[nodiscard]] Vec3f requiredVec3(const std::string& key) { return vec3At(require(key), path(key)); }
+  [[nodiscard]] std::int64_t integer(const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) {
+    const json* j = find(key);
+    return j != nullptr ? integerAt(*j, path(key), lo, hi) : fallback;
+  }
+  [[nodiscard]] bool boolean(const std::string& key, bool fallback) {
+    const json* j = find(key);
+    if (j == nullptr) {
+      return fallback;
+    }
+    if (!j->is_boolean()) {
+      fail(path(key), "expected true or false, got " + j->dump());
+    }
+    return j->get<bool>();
+  }
+  [[nodiscard]] std::string text(const std::string& key, const std::string& fallback) {
+    const json* j = find(key);
+    if (j == nullptr) {
+      return fallback;
+    }
+    if (!j->is_string()) {
+      fail(path(key), "expected a string, got " + j->dump());
+    }
+    return j->get<std::string>();
+  }
+
+  /// Rejects the keys that were never asked for.
+  void done() const {
+    for (const auto& item : object_.items()) {
+      if (!known_.contains(item.key())) {
+        std::string list;
+        for (const std::string& k : known_) {
+          list += (list.empty() ? "" : ", ") + k;
+        }
+        fail(path(item.key()), "unknown key (expected one of: " + list + ")");
+      }
+    }
+  }
+
+  static double numberAt(const json& j, const std::string& field) {
+    if (!j.is_number()) {
+      fail(field, "expected a number, got " + j.dump());
+    }
+    return requireFinite(j.get<double>(), field);
+  }
+  /// A double that fits a float (the world's scalar).
+  static float narrow(double v, const std::string& field) {
+    if (std::abs(v) > static_cast<double>(std::numeric_limits<float>::max())) {
+      throwInvalid(field, v, "is out of range (single precision)");
+    }
+    return static_cast<float>(v);
+  }
+  static Vec3f vec3At(const json& j, const std::string& field) {
+    if (!j.is_array() || j.size() != 3) {
+      fail(field, "expected an array of 3 numbers, got " + j.dump());
+    }
+    return {narrow(numberAt(j[0], field + "[0]"), field + "[0]"), narrow(numberAt(j[1], field + "[1]"), field + "[1]"),
+            narrow(numberAt(j[2], field + "[2]"), field + "[2]")};
+  }
+  static std::int64_t integerAt(const json& j, const std::string& field, std::int64_t lo, std::int64_t hi) {
+    if (!j.is_number_integer()) {
+      fail(field, "expected a whole number, got " + j.dump());
+    }
+    const std::int64_t v = j.get<std::int64_t>();
+    if (v < lo || v > hi) {
+      throwInvalid(field, static_cast<double>(v),
+                   "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+    }
+    return v;
+  }
+
+private:
+  const json& object_;
+  std::string where_;
+  std::set<std::string> known_;
+};
+
+/// The elements of an optional top-level array.
+inline const json& arrayOf(const json& doc, const std::string& key) {
+  static const json empty = json::array();
+  if (!doc.contains(key)) {
+    return empty;
+  }
+  const json& a = doc.at(key);
+  if (!a.is_array()) {
+    fail(key, "expected an array, got " + a.dump());
+  }
+  return a;
+}
+
+} // namespace impetus::cli::json_fields
