@@ -1,4 +1,5 @@
 #include "composite_file.hpp"
+#include "json_fields.hpp"
 
 #include <impetus/core/constants.hpp>
 #include <impetus/core/solid.hpp>
@@ -7,18 +8,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <set>
-#include <sstream>
 
 namespace impetus::cli {
 namespace {
 
 using nlohmann::json;
 
-[[noreturn]] void fail(const std::string& field, const std::string& message) {
-  throw Error(field, field + ": " + message);
-}
+using json_fields::fail;
 
 double number(const json& j, const std::string& field) {
   if (!j.is_number()) {
@@ -160,15 +157,7 @@ MassPart parsePart(const json& part, const std::string& where, double gravity) {
 } // namespace
 
 CompositeBody parseComposite(const std::string& jsonText) {
-  json doc;
-  try {
-    doc = json::parse(jsonText);
-  } catch (const json::parse_error& e) {
-    fail("json", std::string("malformed JSON: ") + e.what());
-  }
-  if (!doc.is_object()) {
-    fail("document", "expected a JSON object with a \"parts\" array");
-  }
+  const json doc = json_fields::parseObject(jsonText, "a JSON object with a \"parts\" array");
   requireKnownKeys(doc, {"gravity", "parts", "description"}, "document");
   CompositeBody body;
   body.gravity = doc.contains("gravity") ? requirePositive(number(doc.at("gravity"), "gravity"), "gravity")
@@ -199,13 +188,7 @@ CompositeBody parseComposite(const std::string& jsonText) {
 }
 
 CompositeBody loadComposite(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) {
-    throw Error("file", "file = " + path + ": cannot be read");
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parseComposite(buffer.str());
+  return parseComposite(json_fields::readFile(path));
 }
 
 } // namespace impetus::cli

@@ -1,6 +1,6 @@
 // Reading one JSON object of a scene file: typed, range-checked values whose errors start with
 // the value's JSON path ("particles[3].mass = -1: must be finite and positive"), and a check
-// that rejects the keys nobody asked for. Used by scene_file.cpp.
+// that rejects the keys nobody asked for. Used by the scene and composite-body files.
 #pragma once
 
 #include <impetus/error.hpp>
@@ -23,6 +23,13 @@ using nlohmann::json;
 [[noreturn]] inline void fail(const std::string& field, const std::string& message) {
   throw Error(field, field + ": " + message);
 }
+
+/// The contents of a text file; an unreadable file is an impetus::Error naming the path.
+std::string readFile(const std::string& path);
+
+/// Parses a JSON document that must be an object; malformed JSON and any other top-level value
+/// are impetus::Errors ("json: malformed JSON: ...", "document: expected ...").
+json parseObject(const std::string& text, const std::string& expectation);
 
 /// "where[i]": the path of an array element.
 inline std::string index(const std::string& where, std::size_t i) { return where + "[" + std::to_string(i) + "]"; }

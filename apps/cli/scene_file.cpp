@@ -15,11 +15,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <random>
-#include <sstream>
 
 namespace impetus::cli {
 namespace {
@@ -566,28 +564,14 @@ private:
 } // namespace
 
 ParticleScene parseScene(const std::string& jsonText) {
-  json doc;
-  try {
-    doc = json::parse(jsonText);
-  } catch (const json::parse_error& e) {
-    fail("json", std::string("malformed JSON: ") + e.what());
-  }
-  if (!doc.is_object()) {
-    fail("document", "expected a JSON object (docs/scene-format.md)");
-  }
+  const json doc = json_fields::parseObject(jsonText, "a JSON object (docs/scene-format.md)");
   ParticleScene scene;
   Loader(scene).load(doc);
   return scene;
 }
 
 ParticleScene loadScene(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) {
-    throw Error("file", "file = " + path + ": cannot be read");
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parseScene(buffer.str());
+  return parseScene(json_fields::readFile(path));
 }
 
 } // namespace impetus::cli

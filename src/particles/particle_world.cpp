@@ -364,10 +364,12 @@ void ParticleWorld::step(float dt) {
     if (!w.constraints.empty()) {
       detail::solveConstraints(w, h);
     }
-    detail::collideObstacles(w, h);
+    // Particle pairs first, then the obstacles: the static walls have the last word, so a pile
+    // pressing on a wall cannot push its particles into it.
     if (w.settings.particleCollisions) {
       detail::collideParticles(w);
     }
+    detail::collideObstacles(w, h);
     w.time += h;
   }
   std::fill(w.particles.userForce.begin(), w.particles.userForce.end(), Vec3f{});
