@@ -1,0 +1,61 @@
+// Definitions for the 2D world: ids, body and shape definitions, world settings.
+#pragma once
+
+#include <impetus/core/id_pool.hpp>
+#include <impetus/math/vec2.hpp>
+
+#include <cstdint>
+
+namespace impetus::rigid2d {
+
+using BodyId = Id<struct BodyTag>;
+using ShapeId = Id<struct ShapeTag>;
+
+enum class BodyType {
+  staticBody,    ///< never moves, infinite mass
+  kinematicBody, ///< moves at its set velocity, unaffected by forces and contacts
+  dynamicBody,   ///< moved by forces and contacts
+};
+
+struct BodyDef {
+  BodyType type = BodyType::staticBody;
+  Vec2f position;               ///< body origin, m
+  float angle = 0.0f;           ///< rad
+  Vec2f linearVelocity;         ///< of the centre of mass, m/s
+  float angularVelocity = 0.0f; ///< rad/s
+  float linearDamping = 0.0f;   ///< 1/s: dv/dt = -c v
+  float angularDamping = 0.0f;  ///< 1/s
+  float gravityScale = 1.0f;
+  bool fixedRotation = false;
+  bool bullet = false; ///< continuous collision against dynamic bodies too (CCD: not yet)
+  std::uint64_t userData = 0;
+};
+
+/// Which shapes collide: A and B collide when (A.category & B.mask) and (B.category & A.mask) are
+/// non-zero, unless they share a non-zero group (positive: always collide, negative: never).
+struct Filter {
+  std::uint64_t category = 1;
+  std::uint64_t mask = ~std::uint64_t{0};
+  std::int32_t group = 0;
+};
+
+struct ShapeDef {
+  float density = 1.0f;     ///< kg/m^2
+  float friction = 0.6f;    ///< Coulomb coefficient
+  float restitution = 0.0f; ///< 0 to 1
+  Filter filter;
+  bool isSensor = false; ///< detects overlap, no collision response (events: not yet)
+  std::uint64_t userData = 0;
+};
+
+struct WorldDef {
+  Vec2f gravity{0.0f, -10.0f}; ///< m/s^2
+  int substeps = 4;            ///< solver substeps per step
+  float contactHertz = 30.0f;  ///< contact stiffness, Hz (capped at a quarter of the substep rate)
+  float contactDampingRatio = 10.0f;
+  float maxContactPushSpeed = 3.0f;  ///< m/s: how fast overlap is resolved
+  float restitutionThreshold = 1.0f; ///< m/s: slower impacts do not bounce
+  float maxLinearSpeed = 400.0f;     ///< m/s
+};
+
+} // namespace impetus::rigid2d

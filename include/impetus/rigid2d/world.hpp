@@ -1,0 +1,86 @@
+// The 2D world: bodies with shapes, stepped by a soft-step solver in the manner of Box2D v3.
+//
+// Each step: the broadphase finds shape pairs whose fattened boxes overlap; each pair's contact
+// manifold is computed once (with speculative points, so contacts act before shapes meet); then
+// `substeps` times: integrate velocities (gravity, damping, forces), warm start, solve the soft
+// contact constraints with bias (they push overlap apart at a bounded speed, springy at
+// contactHertz with contactDampingRatio), integrate positions, and relax (solve again without
+// bias, removing the energy the bias added). Restitution is applied once at the end, for
+// contacts that approached faster than restitutionThreshold. Everything runs in a fixed order:
+// the same inputs give bit-identical results.
+//
+// Landed so far: bodies, shapes, broadphase, narrowphase, the soft-step contact solver with
+// friction and restitution, ray casts. To come: joints, sleeping, continuous collision, events,
+// graph colouring and threads.
+#pragma once
+
+#include <impetus/math/transform2.hpp>
+#include <impetus/rigid2d/geometry.hpp>
+#include <impetus/rigid2d/types.hpp>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace impetus::rigid2d {
+
+struct RayHit {
+  ShapeId shape;
+  Vec2f point;
+  Vec2f normal;
+  float fraction = 0.0f;
+};
+
+class World {
+public:
+  explicit World(const WorldDef& def = {});
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Advances by dt seconds (0 < dt <= 1).
+  void step(float dt);
+
+  BodyId createBody(const BodyDef& def);
+  void destroyBody(BodyId id);
+  [[nodiscard]] bool isValid(BodyId id) const noexcept;
+  [[nodiscard]] std::size_t bodyCount() const noexcept;
+
+  ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
+  ShapeId createShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
+  ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+  ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
+  [[nodiscard]] std::size_t shapeCount() const noexcept;
+  [[nodiscard]] std::size_t contactCount() const noexcept; ///< touching contacts
+
+  // Body state.
+  [[nodiscard]] Transform2f transform(BodyId id) const;
+  [[nodiscard]] Vec2f position(BodyId id) const; ///< body origin, m
+  [[nodiscard]] float angle(BodyId id) const;
+  [[nodiscard]] Vec2f worldCenterOfMass(BodyId id) const;
+  [[nodiscard]] Vec2f linearVelocity(BodyId id) const; ///< of the centre of mass
+  [[nodiscard]] float angularVelocity(BodyId id) const;
+  [[nodiscard]] float mass(BodyId id) const;
+  [[nodiscard]] float rotationalInertia(BodyId id) const; ///< about the centre of mass
+  void setTransform(BodyId id, const Vec2f& position, float angle);
+  void setLinearVelocity(BodyId id, const Vec2f& v);
+  void setAngularVelocity(BodyId id, float w);
+  /// A force (N) at a world point, acting during the next step.
+  void applyForce(BodyId id, const Vec2f& force, const Vec2f& point);
+  void applyTorque(BodyId id, float torque);
+  /// An instant impulse (N s) at a world point.
+  void applyLinearImpulse(BodyId id, const Vec2f& impulse, const Vec2f& point);
+
+  /// The closest shape the ray origin -> origin + translation hits, if any.
+  [[nodiscard]] std::optional<RayHit> castRayClosest(const Vec2f& origin, const Vec2f& translation) const;
+
+  [[nodiscard]] const WorldDef& settings() const noexcept;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace impetus::rigid2d

@@ -1,0 +1,449 @@
+// The 2D world: bodies, shapes, the broadphase, the narrowphase and the step's order.
+#include "rigid2d/world_impl.hpp"
+
+#include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
+
+#include <algorithm>
+
+namespace impetus::rigid2d {
+
+struct World::Impl : detail::WorldState {};
+
+namespace detail {
+
+Body& WorldState::body(BodyId id) {
+  if (!bodyIds.isValidId(id)) {
+    throwInvalid("body id", static_cast<double>(id.index), "body does not exist (destroyed or never created)");
+  }
+  return bodies[id.index];
+}
+
+const Body& WorldState::body(BodyId id) const { return const_cast<WorldState*>(this)->body(id); }
+
+} // namespace detail
+
+namespace {
+
+using detail::Body;
+using detail::Contact;
+using detail::Shape;
+using detail::WorldState;
+
+std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
+  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+}
+
+AABB shapeBox(const Shape& s, const Transform2f& xf) {
+  return std::visit([&](const auto& g) { return computeAABB(g, xf); }, s.geometry);
+}
+
+bool shouldCollide(const Filter& a, const Filter& b) {
+  if (a.group == b.group && a.group != 0) {
+    return a.group > 0;
+  }
+  return (a.category & b.mask) != 0 && (b.category & a.mask) != 0;
+}
+
+/// Mass, centre of mass and inertia of a body from its shapes' densities.
+void updateMass(WorldState& w, Body& b) {
+  b.mass = b.inverseMass = b.inertia = b.inverseInertia = 0.0f;
+  b.localCenter = {};
+  if (b.type != BodyType::dynamicBody) {
+    b.center = transformPoint(b.transform, b.localCenter);
+    return;
+  }
+  float mass = 0.0f;
+  Vec2f moment;
+  float inertiaAboutOrigin = 0.0f;
+  for (std::uint32_t slot : b.shapes) {
+    const Shape& s = w.shapes[slot];
+    if (s.density == 0.0f || std::holds_alternative<Segment>(s.geometry)) {
+      continue;
+    }
+    const MassData md = std::visit(
+        [&](const auto& g) -> MassData {
+          if constexpr (std::is_same_v<std::decay_t<decltype(g)>, Segment>) {
+            return {};
+          } else {
+            return computeMass(g, s.density);
+          }
+        },
+        s.geometry);
+    mass += md.mass;
+    moment += md.center * md.mass;
+    inertiaAboutOrigin += md.rotationalInertia + md.mass * lengthSquared(md.center);
+  }
+  if (mass > 0.0f) {
+    b.mass = mass;
+    b.inverseMass = 1.0f / mass;
+    b.localCenter = moment / mass;
+    const float inertia = inertiaAboutOrigin - mass * lengthSquared(b.localCenter);
+    if (inertia > 0.0f && !b.fixedRotation) {
+      b.inertia = inertia;
+      b.inverseInertia = 1.0f / inertia;
+    }
+  } else {
+    // A dynamic body needs mass: without shapes (or with zero density) it behaves as 1 kg.
+    b.mass = 1.0f;
+    b.inverseMass = 1.0f;
+  }
+  b.center = transformPoint(b.transform, b.localCenter);
+}
+
+Manifold collide(const Shape& a, const Transform2f& xfA, const Shape& b, const Transform2f& xfB) {
+  const auto polygonOf = [](const Shape& s) -> std::optional<Polygon> {
+    if (const auto* p = std::get_if<Polygon>(&s.geometry)) {
+      return *p;
+    }
+    if (const auto* c = std::get_if<Capsule>(&s.geometry)) {
+      return asPolygon(*c);
+    }
+    if (const auto* g = std::get_if<Segment>(&s.geometry)) {
+      return asPolygon(*g);
+    }
+    return std::nullopt;
+  };
+  const Circle* ca = std::get_if<Circle>(&a.geometry);
+  const Circle* cb = std::get_if<Circle>(&b.geometry);
+  if (ca != nullptr && cb != nullptr) {
+    return collideCircles(*ca, xfA, *cb, xfB);
+  }
+  if (cb != nullptr) {
+    return collidePolygonAndCircle(*polygonOf(a), xfA, *cb, xfB);
+  }
+  if (ca != nullptr) {
+    // Circle first: collide the other way round and turn the result around.
+    Manifold m = collidePolygonAndCircle(*polygonOf(b), xfB, *ca, xfA);
+    m.normal = -m.normal;
+    for (int i = 0; i < m.pointCount; ++i) {
+      std::swap(m.points[static_cast<std::size_t>(i)].anchorA, m.points[static_cast<std::size_t>(i)].anchorB);
+    }
+    return m;
+  }
+  return collidePolygons(*polygonOf(a), xfA, *polygonOf(b), xfB);
+}
+
+/// Finds new pairs for the shapes whose fat boxes were (re)inserted, and drops contacts whose
+/// fat boxes no longer overlap.
+void updatePairs(WorldState& w) {
+  std::vector<std::uint64_t> newPairs;
+  for (std::uint32_t slot : w.moveBuffer) {
+    const Shape& s = w.shapes[slot];
+    if (!s.alive) {
+      continue;
+    }
+    w.tree.query(s.fatBox, [&](std::int32_t, std::uint64_t other64) {
+      const auto other = static_cast<std::uint32_t>(other64);
+      const Shape& o = w.shapes[other];
+      if (other == slot || o.body == s.body) {
+        return true;
+      }
+      const Body& ba = w.bodies[s.body];
+      const Body& bb = w.bodies[o.body];
+      // Something must be able to respond.
+      if (ba.type != BodyType::dynamicBody && bb.type != BodyType::dynamicBody) {
+        return true;
+      }
+      if (!shouldCollide(s.filter, o.filter)) {
+        return true;
+      }
+      newPairs.push_back(pairKey(slot, other));
+      return true;
+    });
+  }
+  w.moveBuffer.clear();
+  std::sort(newPairs.begin(), newPairs.end()); // deterministic creation order
+  newPairs.erase(std::unique(newPairs.begin(), newPairs.end()), newPairs.end());
+  for (std::uint64_t key : newPairs) {
+    if (w.contacts.contains(key)) {
+      continue;
+    }
+    Contact c;
+    c.shapeA = static_cast<std::uint32_t>(key >> 32);
+    c.shapeB = static_cast<std::uint32_t>(key & 0xffffffffU);
+    const Shape& a = w.shapes[c.shapeA];
+    const Shape& b = w.shapes[c.shapeB];
+    c.friction = std::sqrt(a.friction * b.friction);
+    c.restitution = std::max(a.restitution, b.restitution);
+    w.contacts.emplace(key, c);
+  }
+  std::erase_if(w.contacts, [&](const auto& item) {
+    const Contact& c = item.second;
+    return !overlaps(w.shapes[c.shapeA].fatBox, w.shapes[c.shapeB].fatBox);
+  });
+}
+
+void collideContacts(WorldState& w) {
+  for (auto& [key, contact] : w.contacts) {
+    const Shape& a = w.shapes[contact.shapeA];
+    const Shape& b = w.shapes[contact.shapeB];
+    const Manifold old = contact.manifold;
+    contact.manifold = collide(a, w.bodies[a.body].transform, b, w.bodies[b.body].transform);
+    // Warm starting: a point with the same features as last step keeps its impulses.
+    for (int i = 0; i < contact.manifold.pointCount; ++i) {
+      ManifoldPoint& p = contact.manifold.points[static_cast<std::size_t>(i)];
+      for (int j = 0; j < old.pointCount; ++j) {
+        const ManifoldPoint& q = old.points[static_cast<std::size_t>(j)];
+        if (q.id == p.id) {
+          p.normalImpulse = q.normalImpulse;
+          p.tangentImpulse = q.tangentImpulse;
+        }
+      }
+    }
+  }
+}
+
+void synchronizeShapes(WorldState& w, Body& b) {
+  for (std::uint32_t slot : b.shapes) {
+    Shape& s = w.shapes[slot];
+    const AABB box = shapeBox(s, b.transform);
+    if (!contains(s.fatBox, box)) {
+      s.fatBox = enlarge(box, aabbMargin);
+      w.tree.moveProxy(s.proxy, s.fatBox);
+      w.moveBuffer.push_back(slot);
+    }
+  }
+}
+
+} // namespace
+
+World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
+  requireFinite(def.gravity, "gravity");
+  if (def.substeps < 1 || def.substeps > 64) {
+    throwInvalid("substeps", def.substeps, "must be between 1 and 64");
+  }
+  requireNonNegative(def.contactHertz, "contactHertz");
+  requireNonNegative(def.contactDampingRatio, "contactDampingRatio");
+  requirePositive(def.maxContactPushSpeed, "maxContactPushSpeed");
+  requireNonNegative(def.restitutionThreshold, "restitutionThreshold");
+  requirePositive(def.maxLinearSpeed, "maxLinearSpeed");
+  impl_->def = def;
+}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+const WorldDef& World::settings() const noexcept { return impl_->def; }
+
+BodyId World::createBody(const BodyDef& def) {
+  requireFinite(def.position, "position");
+  requireFinite(def.angle, "angle");
+  requireFinite(def.linearVelocity, "linearVelocity");
+  requireFinite(def.angularVelocity, "angularVelocity");
+  requireNonNegative(def.linearDamping, "linearDamping");
+  requireNonNegative(def.angularDamping, "angularDamping");
+  requireFinite(def.gravityScale, "gravityScale");
+  Impl& w = *impl_;
+  const BodyId id = w.bodyIds.allocateId<BodyTag>();
+  if (w.bodies.size() <= id.index) {
+    w.bodies.resize(id.index + 1);
+  }
+  Body& b = w.bodies[id.index];
+  b = Body{};
+  b.type = def.type;
+  b.transform = {def.position, Rot2f::fromAngle(def.angle)};
+  b.linearVelocity = def.type == BodyType::staticBody ? Vec2f{} : def.linearVelocity;
+  b.angularVelocity = def.type == BodyType::staticBody ? 0.0f : def.angularVelocity;
+  b.linearDamping = def.linearDamping;
+  b.angularDamping = def.angularDamping;
+  b.gravityScale = def.gravityScale;
+  b.fixedRotation = def.fixedRotation;
+  b.userData = def.userData;
+  b.id = id;
+  b.alive = true;
+  updateMass(w, b);
+  return id;
+}
+
+void World::destroyBody(BodyId id) {
+  Impl& w = *impl_;
+  Body& b = w.body(id);
+  for (std::uint32_t slot : b.shapes) {
+    Shape& s = w.shapes[slot];
+    std::erase_if(w.contacts,
+                  [&](const auto& item) { return item.second.shapeA == slot || item.second.shapeB == slot; });
+    w.tree.destroyProxy(s.proxy);
+    w.shapeIds.freeId(s.id);
+    s = Shape{};
+  }
+  b = Body{};
+  w.bodyIds.freeId(id);
+}
+
+bool World::isValid(BodyId id) const noexcept { return impl_->bodyIds.isValidId(id); }
+std::size_t World::bodyCount() const noexcept { return impl_->bodyIds.size(); }
+std::size_t World::shapeCount() const noexcept { return impl_->shapeIds.size(); }
+std::size_t World::contactCount() const noexcept {
+  return static_cast<std::size_t>(std::count_if(impl_->contacts.begin(), impl_->contacts.end(),
+                                                [](const auto& item) { return item.second.manifold.pointCount > 0; }));
+}
+
+namespace {
+
+ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail::Geometry& geometry) {
+  Body& b = w.body(bodyId);
+  requireNonNegative(def.density, "density");
+  requireNonNegative(def.friction, "friction");
+  if (!(def.restitution >= 0.0f && def.restitution <= 1.0f)) {
+    throwInvalid("restitution", def.restitution, "must be in [0, 1]");
+  }
+  if (b.type == BodyType::dynamicBody && def.density == 0.0f && !def.isSensor &&
+      !std::holds_alternative<Segment>(geometry)) {
+    throwInvalid("density", def.density, "a shape on a dynamic body needs a positive density");
+  }
+  const ShapeId id = w.shapeIds.allocateId<ShapeTag>();
+  if (w.shapes.size() <= id.index) {
+    w.shapes.resize(id.index + 1);
+  }
+  Shape& s = w.shapes[id.index];
+  s = Shape{};
+  s.geometry = geometry;
+  s.body = bodyId.index;
+  s.density = def.density;
+  s.friction = def.friction;
+  s.restitution = def.restitution;
+  s.filter = def.filter;
+  s.sensor = def.isSensor;
+  s.userData = def.userData;
+  s.id = id;
+  s.alive = true;
+  s.fatBox = enlarge(shapeBox(s, b.transform), b.type == BodyType::staticBody ? 0.0f : aabbMargin);
+  s.proxy = w.tree.createProxy(s.fatBox, id.index);
+  w.moveBuffer.push_back(id.index);
+  b.shapes.push_back(id.index);
+  updateMass(w, b);
+  return id;
+}
+
+} // namespace
+
+ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) {
+  requireFinite(circle.center, "center");
+  requirePositive(circle.radius, "radius");
+  return addShape(*impl_, body, def, circle);
+}
+ShapeId World::createShape(BodyId body, const ShapeDef& def, const Capsule& capsule) {
+  requireFinite(capsule.center1, "center1");
+  requireFinite(capsule.center2, "center2");
+  requirePositive(capsule.radius, "radius");
+  if (distance(capsule.center1, capsule.center2) <= linearSlop) {
+    throwInvalid("center2", 0.0, "capsule ends coincide: use a circle");
+  }
+  return addShape(*impl_, body, def, capsule);
+}
+ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& polygon) {
+  if (polygon.count < 3 || polygon.count > maxPolygonVertices) {
+    throwInvalid("polygon.count", polygon.count, "build polygons with makePolygon or makeBox");
+  }
+  return addShape(*impl_, body, def, polygon);
+}
+ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segment) {
+  requireFinite(segment.point1, "point1");
+  requireFinite(segment.point2, "point2");
+  if (distance(segment.point1, segment.point2) <= linearSlop) {
+    throwInvalid("point2", 0.0, "segment is too short");
+  }
+  return addShape(*impl_, body, def, segment);
+}
+
+Transform2f World::transform(BodyId id) const { return impl_->body(id).transform; }
+Vec2f World::position(BodyId id) const { return impl_->body(id).transform.p; }
+float World::angle(BodyId id) const { return impl_->body(id).transform.q.angle(); }
+Vec2f World::worldCenterOfMass(BodyId id) const { return impl_->body(id).center; }
+Vec2f World::linearVelocity(BodyId id) const { return impl_->body(id).linearVelocity; }
+float World::angularVelocity(BodyId id) const { return impl_->body(id).angularVelocity; }
+float World::mass(BodyId id) const { return impl_->body(id).mass; }
+float World::rotationalInertia(BodyId id) const { return impl_->body(id).inertia; }
+
+void World::setTransform(BodyId id, const Vec2f& position, float angle) {
+  requireFinite(position, "position");
+  requireFinite(angle, "angle");
+  Body& b = impl_->body(id);
+  b.transform = {position, Rot2f::fromAngle(angle)};
+  b.center = transformPoint(b.transform, b.localCenter);
+  synchronizeShapes(*impl_, b);
+}
+void World::setLinearVelocity(BodyId id, const Vec2f& v) {
+  Body& b = impl_->body(id);
+  if (b.type != BodyType::staticBody) {
+    b.linearVelocity = requireFinite(v, "linearVelocity");
+  }
+}
+void World::setAngularVelocity(BodyId id, float av) {
+  Body& b = impl_->body(id);
+  if (b.type != BodyType::staticBody && !b.fixedRotation) {
+    b.angularVelocity = static_cast<float>(requireFinite(av, "angularVelocity"));
+  }
+}
+void World::applyForce(BodyId id, const Vec2f& force, const Vec2f& point) {
+  Body& b = impl_->body(id);
+  requireFinite(force, "force");
+  requireFinite(point, "point");
+  b.force += force;
+  b.torque += cross(point - b.center, force);
+}
+void World::applyTorque(BodyId id, float torque) {
+  impl_->body(id).torque += static_cast<float>(requireFinite(torque, "torque"));
+}
+void World::applyLinearImpulse(BodyId id, const Vec2f& impulse, const Vec2f& point) {
+  Body& b = impl_->body(id);
+  requireFinite(impulse, "impulse");
+  requireFinite(point, "point");
+  b.linearVelocity += impulse * b.inverseMass;
+  b.angularVelocity += b.inverseInertia * cross(point - b.center, impulse);
+}
+
+void World::step(float dt) {
+  if (!(dt > 0.0f && dt <= 1.0f)) {
+    throwInvalid("dt", dt, "time step must be in (0, 1] s");
+  }
+  Impl& w = *impl_;
+  updatePairs(w);
+  collideContacts(w);
+  // Solver state per body slot: velocities in, position deltas out.
+  w.states.assign(w.bodies.size(), detail::BodyState{});
+  for (const Body& b : w.bodies) {
+    if (b.alive && b.type != BodyType::staticBody) {
+      w.states[b.id.index] = {b.linearVelocity, b.angularVelocity, {}, Rot2f::identity()};
+    }
+  }
+  detail::solveContacts(w, dt);
+  // Finalize: apply the deltas, clear forces, refresh the broadphase.
+  for (Body& b : w.bodies) {
+    if (!b.alive || b.type == BodyType::staticBody) {
+      continue;
+    }
+    const detail::BodyState& s = w.states[b.id.index];
+    b.linearVelocity = s.v;
+    b.angularVelocity = s.w;
+    b.center += s.dp;
+    const Rot2f q = normalize(mul(s.dq, b.transform.q));
+    b.transform = {b.center - rotate(q, b.localCenter), q};
+    b.force = {};
+    b.torque = 0.0f;
+    synchronizeShapes(w, b);
+  }
+}
+
+std::optional<RayHit> World::castRayClosest(const Vec2f& origin, const Vec2f& translation) const {
+  requireFinite(origin, "origin");
+  requireFinite(translation, "translation");
+  const Impl& w = *impl_;
+  std::optional<RayHit> best;
+  w.tree.rayCast(origin, origin + translation, [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    const Transform2f& xf = w.bodies[s.body].transform;
+    const float maxFraction = best ? best->fraction : 1.0f;
+    const RayCastInput local{inverseTransformPoint(xf, origin), inverseRotate(xf.q, translation), maxFraction};
+    const CastOutput out = std::visit([&](const auto& g) { return rayCast(g, local); }, s.geometry);
+    if (!out.hit) {
+      return maxFraction;
+    }
+    best = RayHit{s.id, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction};
+    return out.fraction;
+  });
+  return best;
+}
+
+} // namespace impetus::rigid2d

@@ -1,0 +1,89 @@
+// Internal state of the 2D world, shared by world.cpp (bookkeeping, broadphase, collide,
+// finalize) and contact_solver.cpp (the soft-step solve).
+#pragma once
+
+#include <impetus/core/id_pool.hpp>
+#include <impetus/rigid2d/dynamic_tree.hpp>
+#include <impetus/rigid2d/manifold.hpp>
+#include <impetus/rigid2d/world.hpp>
+
+#include <map>
+#include <variant>
+#include <vector>
+
+namespace impetus::rigid2d::detail {
+
+using Geometry = std::variant<Circle, Capsule, Polygon, Segment>;
+
+struct Shape {
+  Geometry geometry;
+  std::uint32_t body = 0; ///< body slot
+  float density = 1.0f;
+  float friction = 0.6f;
+  float restitution = 0.0f;
+  Filter filter;
+  bool sensor = false;
+  std::uint64_t userData = 0;
+  std::int32_t proxy = DynamicTree::nullNode;
+  AABB fatBox;
+  ShapeId id;
+  bool alive = false;
+};
+
+struct Body {
+  BodyType type = BodyType::staticBody;
+  Transform2f transform; ///< of the body origin
+  Vec2f localCenter;     ///< centre of mass in the body frame
+  Vec2f center;          ///< centre of mass, world
+  Vec2f linearVelocity;
+  float angularVelocity = 0.0f;
+  Vec2f force;
+  float torque = 0.0f;
+  float mass = 0.0f, inverseMass = 0.0f;
+  float inertia = 0.0f, inverseInertia = 0.0f;
+  float linearDamping = 0.0f, angularDamping = 0.0f, gravityScale = 1.0f;
+  bool fixedRotation = false;
+  std::vector<std::uint32_t> shapes; ///< shape slots
+  std::uint64_t userData = 0;
+  BodyId id;
+  bool alive = false;
+};
+
+struct Contact {
+  std::uint32_t shapeA = 0; ///< the lower shape slot
+  std::uint32_t shapeB = 0;
+  Manifold manifold;
+  float friction = 0.0f;
+  float restitution = 0.0f;
+};
+
+/// The solver's per-body state for one step: velocities and the position and rotation deltas
+/// accumulated over the substeps (anchors stay fixed in the bodies, so separations follow from
+/// the deltas without recomputing the manifolds).
+struct BodyState {
+  Vec2f v;
+  float w = 0.0f;
+  Vec2f dp;
+  Rot2f dq = Rot2f::identity();
+};
+
+struct WorldState {
+  WorldDef def;
+  IdPool bodyIds;
+  std::vector<Body> bodies; ///< by id slot
+  IdPool shapeIds;
+  std::vector<Shape> shapes; ///< by id slot
+  DynamicTree tree;
+  std::vector<std::uint32_t> moveBuffer;     ///< shapes whose fat box was (re)inserted
+  std::map<std::uint64_t, Contact> contacts; ///< by (shapeA << 32 | shapeB): a fixed order
+  std::vector<BodyState> states;             ///< by body slot, rebuilt each step
+
+  Body& body(BodyId id);
+  [[nodiscard]] const Body& body(BodyId id) const;
+};
+
+// contact_solver.cpp
+/// The substepped soft contact solve over every touching contact; updates `states`.
+void solveContacts(WorldState& w, float dt);
+
+} // namespace impetus::rigid2d::detail

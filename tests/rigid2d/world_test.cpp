@@ -1,0 +1,243 @@
+#include "support/error_field.hpp"
+
+#include <impetus/math/scalar.hpp>
+#include <impetus/rigid2d/world.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace impetus::rigid2d {
+namespace {
+
+constexpr float dt = 1.0f / 60.0f;
+
+BodyId addGround(World& world, float halfWidth = 50.0f) {
+  const BodyId ground = world.createBody({});
+  world.createShape(ground, {}, makeOffsetBox(halfWidth, 0.5f, {0.0f, -0.5f}, 0.0f)); // top at y = 0
+  return ground;
+}
+
+BodyId addBox(World& world, const Vec2f& position, float half, float friction = 0.6f, float angle = 0.0f) {
+  BodyDef def;
+  def.type = BodyType::dynamicBody;
+  def.position = position;
+  def.angle = angle;
+  const BodyId body = world.createBody(def);
+  ShapeDef shape;
+  shape.friction = friction;
+  world.createShape(body, shape, makeBox(half, half));
+  return body;
+}
+
+// Semi-implicit Euler with n substeps of h: after k substeps y = y0 - g h^2 k (k + 1) / 2, the
+// exact discrete result (the parabola plus g h t / 2).
+TEST(World2D, free_fall_follows_semi_implicit_euler) {
+  World world;
+  BodyDef def;
+  def.type = BodyType::dynamicBody;
+  def.position = {0.0f, 100.0f};
+  const BodyId ball = world.createBody(def);
+  world.createShape(ball, {}, Circle{{}, 0.5f});
+  for (int i = 0; i < 60; ++i) {
+    world.step(dt);
+  }
+  const float h = dt / 4.0f;
+  const float k = 240.0f;
+  EXPECT_NEAR(world.position(ball).y, 100.0f - 10.0f * h * h * k * (k + 1.0f) / 2.0f, 2e-3f);
+  EXPECT_NEAR(world.linearVelocity(ball).y, -10.0f, 1e-3f);
+  EXPECT_NEAR(world.mass(ball), pi<float> * 0.25f, 1e-5f);
+}
+
+TEST(World2D, dropped_ball_rebounds_to_e_squared_h) {
+  World world;
+  addGround(world);
+  BodyDef def;
+  def.type = BodyType::dynamicBody;
+  def.position = {0.0f, 2.25f}; // bottom 2 m above the ground
+  const BodyId ball = world.createBody(def);
+  ShapeDef shape;
+  shape.restitution = 0.7f;
+  world.createShape(ball, shape, Circle{{}, 0.25f});
+  bool bounced = false;
+  float apex = 0.0f;
+  for (int i = 0; i < 300; ++i) {
+    world.step(dt);
+    const float vy = world.linearVelocity(ball).y;
+    if (vy > 0.0f) {
+      bounced = true;
+    }
+    if (bounced) {
+      apex = std::max(apex, world.position(ball).y - 0.25f);
+    }
+    if (bounced && vy < 0.0f) {
+      break;
+    }
+  }
+  // The apex is sampled every 1/60 s: within 2% of e^2 h = 0.98 m.
+  EXPECT_NEAR(apex, 0.49f * 2.0f, 0.02f * 0.98f);
+}
+
+TEST(World2D, box_on_a_slope_sticks_iff_tan_theta_below_mu) {
+  for (const float degrees : {20.0f, 35.0f}) {
+    World world;
+    const float theta = degToRad(degrees);
+    const float mu = 0.5f; // atan(0.5) = 26.6 degrees
+    const BodyId ramp = world.createBody({});
+    ShapeDef rampShape;
+    rampShape.friction = mu;
+    world.createShape(ramp, rampShape, makeOffsetBox(20.0f, 0.5f, {0.0f, 0.0f}, theta));
+    // A box resting on the ramp's surface, its sides along the slope.
+    const Vec2f up{-std::sin(theta), std::cos(theta)};
+    const BodyId box = addBox(world, up * (0.5f + 0.25f), 0.25f, mu, theta);
+    for (int i = 0; i < 30; ++i) {
+      world.step(dt);
+    }
+    const Vec2f v0 = world.linearVelocity(box);
+    const Vec2f p0 = world.position(box);
+    for (int i = 0; i < 60; ++i) {
+      world.step(dt);
+    }
+    const Vec2f along{std::cos(theta), std::sin(theta)};
+    if (std::tan(theta) <= mu) {
+      EXPECT_LT(distance(world.position(box), p0), 0.01f) << degrees;
+    } else {
+      // a = g (sin - mu cos) down the slope, measured over 1 s.
+      const float expected = 10.0f * (std::sin(theta) - mu * std::cos(theta));
+      const float measured = -dot(world.linearVelocity(box) - v0, along) / 1.0f;
+      EXPECT_NEAR(measured, expected, 0.02f * expected) << degrees;
+    }
+  }
+}
+
+TEST(World2D, ten_box_stack_stands_still) {
+  World world;
+  addGround(world);
+  std::vector<BodyId> boxes;
+  for (int i = 0; i < 10; ++i) {
+    boxes.push_back(addBox(world, {0.0f, 0.5f + 1.0f * static_cast<float>(i)}, 0.5f));
+  }
+  // The first seconds are a transient: the soft contacts compress (3 mm each under the stack's
+  // weight, the spring of contactHertz) and the top sways by up to 1.5 cm before settling.
+  for (int i = 0; i < 300; ++i) {
+    world.step(dt);
+  }
+  const Vec2f top = world.position(boxes.back());
+  for (int i = 0; i < 600; ++i) { // 10 s
+    world.step(dt);
+  }
+  EXPECT_LT(distance(world.position(boxes.back()), top), 0.01f)
+      << "top moved from (" << top.x << ", " << top.y << ") to (" << world.position(boxes.back()).x << ", "
+      << world.position(boxes.back()).y << ")";
+  EXPECT_NEAR(world.position(boxes.back()).x, 0.0f, 0.01f);
+  EXPECT_EQ(world.contactCount(), 10U);
+}
+
+TEST(World2D, pyramid_of_twenty_levels_stands) {
+  World world;
+  addGround(world);
+  BodyId top;
+  for (int row = 0; row < 20; ++row) {
+    for (int i = 0; i < 20 - row; ++i) {
+      const float x = (static_cast<float>(i) - 0.5f * static_cast<float>(19 - row)) * 1.0f;
+      top = addBox(world, {x, 0.5f + static_cast<float>(row)}, 0.5f);
+    }
+  }
+  const Vec2f start = world.position(top);
+  for (int i = 0; i < 600; ++i) {
+    world.step(dt);
+  }
+  EXPECT_LT(start.y - world.position(top).y, 0.05f); // settles a little, no collapse
+  EXPECT_LT(std::abs(world.position(top).x - start.x), 0.05f);
+}
+
+TEST(World2D, free_collision_conserves_momentum) {
+  WorldDef def;
+  def.gravity = {};
+  World world(def);
+  BodyDef a;
+  a.type = BodyType::dynamicBody;
+  a.position = {-2.0f, 0.1f};
+  a.linearVelocity = {5.0f, 0.0f};
+  BodyDef b = a;
+  b.position = {2.0f, -0.1f};
+  b.linearVelocity = {-3.0f, 0.0f};
+  const BodyId ba = world.createBody(a);
+  const BodyId bb = world.createBody(b);
+  ShapeDef shape;
+  shape.restitution = 0.5f;
+  world.createShape(ba, shape, Circle{{}, 0.5f});
+  shape.density = 3.0f;
+  world.createShape(bb, shape, makeBox(0.4f, 0.4f));
+  const auto momentum = [&] {
+    return world.linearVelocity(ba) * world.mass(ba) + world.linearVelocity(bb) * world.mass(bb);
+  };
+  const Vec2f p0 = momentum();
+  for (int i = 0; i < 120; ++i) {
+    world.step(dt);
+  }
+  const Vec2f p1 = momentum();
+  EXPECT_LT(world.linearVelocity(ba).x, 5.0f); // they did collide
+  EXPECT_NEAR(p1.x, p0.x, 1e-4f * std::abs(p0.x) + 1e-4f);
+  EXPECT_NEAR(p1.y, p0.y, 1e-3f);
+}
+
+TEST(World2D, same_inputs_give_identical_results) {
+  const auto run = [] {
+    World world;
+    addGround(world);
+    for (int i = 0; i < 30; ++i) {
+      addBox(world, {0.1f * static_cast<float>(i % 7), 1.0f + 1.1f * static_cast<float>(i)}, 0.4f, 0.6f,
+             0.1f * static_cast<float>(i));
+    }
+    for (int i = 0; i < 200; ++i) {
+      world.step(dt);
+    }
+    std::vector<float> state;
+    for (std::uint32_t k = 1; k <= 30; ++k) {
+      const Transform2f xf = world.transform({k, 1});
+      state.insert(state.end(), {xf.p.x, xf.p.y, xf.q.c, xf.q.s});
+    }
+    return state;
+  };
+  EXPECT_EQ(run(), run());
+}
+
+TEST(World2D, ray_cast_finds_the_closest_shape) {
+  World world;
+  addGround(world);
+  const BodyId box = addBox(world, {3.0f, 0.5f}, 0.5f);
+  const std::optional<RayHit> hit = world.castRayClosest({0.0f, 0.5f}, {10.0f, 0.0f});
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_NEAR(hit->point.x, 2.5f, 1e-5f);
+  EXPECT_NEAR(hit->normal.x, -1.0f, 1e-5f);
+  EXPECT_NEAR(hit->fraction, 0.25f, 1e-5f);
+  (void)box;
+  const std::optional<RayHit> down = world.castRayClosest({-3.0f, 5.0f}, {0.0f, -10.0f});
+  ASSERT_TRUE(down.has_value());
+  EXPECT_NEAR(down->point.y, 0.0f, 1e-5f);
+  EXPECT_FALSE(world.castRayClosest({-3.0f, 5.0f}, {0.0f, 3.0f}).has_value());
+}
+
+TEST(World2D, bad_input_is_an_error) {
+  World world;
+  BodyDef def;
+  def.type = BodyType::dynamicBody;
+  def.position = {std::nanf(""), 0.0f};
+  expectErrorField([&] { (void)world.createBody(def); }, "position.x");
+  def.position = {};
+  const BodyId body = world.createBody(def);
+  ShapeDef shape;
+  shape.density = 0.0f;
+  expectErrorField([&] { (void)world.createShape(body, shape, Circle{{}, 0.5f}); }, "density");
+  expectErrorField([&] { (void)world.createShape(body, {}, Circle{{}, 0.0f}); }, "radius");
+  expectErrorField([&] { world.step(0.0f); }, "dt");
+  world.destroyBody(body);
+  expectErrorField([&] { (void)world.position(body); }, "body id");
+  WorldDef bad;
+  bad.substeps = 0;
+  expectErrorField([&] { (void)World(bad); }, "substeps");
+}
+
+} // namespace
+} // namespace impetus::rigid2d
