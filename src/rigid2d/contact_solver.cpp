@@ -236,8 +236,16 @@ void solveContacts(WorldState& w, float dt) {
     }
   }
 
-  // Keep the impulses for the next step's warm start.
+  // Keep the impulses for the next step's warm start; note the fastest impact for hit events.
   for (const Constraint& c : constraints) {
+    c.contact->approachSpeed = 0.0f;
+    for (int k = 0; k < c.pointCount; ++k) {
+      const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+      if (p.maxNormalImpulse > 0.0f && -p.relativeVelocity > c.contact->approachSpeed) {
+        c.contact->approachSpeed = -p.relativeVelocity;
+        c.contact->fastestPoint = k;
+      }
+    }
     for (int k = 0; k < c.pointCount; ++k) {
       ManifoldPoint& mp = c.contact->manifold.points[static_cast<std::size_t>(k)];
       mp.normalImpulse = c.points[static_cast<std::size_t>(k)].normalImpulse;

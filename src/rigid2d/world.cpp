@@ -5,6 +5,7 @@
 #include <impetus/math/validate.hpp>
 
 #include <algorithm>
+#include <utility>
 
 namespace impetus::rigid2d {
 
@@ -124,6 +125,20 @@ Manifold collide(const Shape& a, const Transform2f& xfA, const Shape& b, const T
   return collidePolygons(*polygonOf(a), xfA, *polygonOf(b), xfB);
 }
 
+/// Reports a contact that stops touching (or is destroyed while touching) to `events`.
+void reportEnd(const WorldState& w, const Contact& c, ContactEvents& events, SensorEvents& sensors) {
+  if (c.manifold.pointCount == 0) {
+    return;
+  }
+  const Shape& a = w.shapes[c.shapeA];
+  const Shape& b = w.shapes[c.shapeB];
+  if (a.sensor || b.sensor) {
+    sensors.ends.push_back(a.sensor ? SensorEvent{a.id, b.id} : SensorEvent{b.id, a.id});
+  } else {
+    events.ends.push_back({a.id, b.id});
+  }
+}
+
 /// Finds new pairs for the shapes whose fat boxes were (re)inserted, and drops contacts whose
 /// fat boxes no longer overlap.
 void updatePairs(WorldState& w) {
@@ -170,7 +185,11 @@ void updatePairs(WorldState& w) {
   }
   std::erase_if(w.contacts, [&](const auto& item) {
     const Contact& c = item.second;
-    return !overlaps(w.shapes[c.shapeA].fatBox, w.shapes[c.shapeB].fatBox);
+    const bool apart = !overlaps(w.shapes[c.shapeA].fatBox, w.shapes[c.shapeB].fatBox);
+    if (apart) {
+      reportEnd(w, c, w.contactEvents, w.sensorEvents);
+    }
+    return apart;
   });
 }
 
@@ -180,6 +199,17 @@ void collideContacts(WorldState& w) {
     const Shape& b = w.shapes[contact.shapeB];
     const Manifold old = contact.manifold;
     contact.manifold = collide(a, w.bodies[a.body].transform, b, w.bodies[b.body].transform);
+    const bool touching = contact.manifold.pointCount > 0;
+    const bool wasTouching = old.pointCount > 0;
+    if (touching != wasTouching) {
+      if (!touching) {
+        reportEnd(w, Contact{contact.shapeA, contact.shapeB, old}, w.contactEvents, w.sensorEvents);
+      } else if (a.sensor || b.sensor) {
+        w.sensorEvents.begins.push_back(a.sensor ? SensorEvent{a.id, b.id} : SensorEvent{b.id, a.id});
+      } else {
+        w.contactEvents.begins.push_back({a.id, b.id});
+      }
+    }
     // Warm starting: a point with the same features as last step keeps its impulses.
     for (int i = 0; i < contact.manifold.pointCount; ++i) {
       ManifoldPoint& p = contact.manifold.points[static_cast<std::size_t>(i)];
@@ -261,8 +291,13 @@ void World::destroyBody(BodyId id) {
   Body& b = w.body(id);
   for (std::uint32_t slot : b.shapes) {
     Shape& s = w.shapes[slot];
-    std::erase_if(w.contacts,
-                  [&](const auto& item) { return item.second.shapeA == slot || item.second.shapeB == slot; });
+    std::erase_if(w.contacts, [&](const auto& item) {
+      const bool attached = item.second.shapeA == slot || item.second.shapeB == slot;
+      if (attached) {
+        reportEnd(w, item.second, w.pendingEvents, w.pendingSensorEvents);
+      }
+      return attached;
+    });
     w.tree.destroyProxy(s.proxy);
     w.shapeIds.freeId(s.id);
     s = Shape{};
@@ -399,6 +434,8 @@ void World::step(float dt) {
     throwInvalid("dt", dt, "time step must be in (0, 1] s");
   }
   Impl& w = *impl_;
+  w.contactEvents = std::exchange(w.pendingEvents, {});
+  w.sensorEvents = std::exchange(w.pendingSensorEvents, {});
   updatePairs(w);
   collideContacts(w);
   // Solver state per body slot: velocities in, position deltas out.
@@ -409,6 +446,13 @@ void World::step(float dt) {
     }
   }
   detail::solveContacts(w, dt);
+  for (const auto& [key, contact] : w.contacts) {
+    if (contact.manifold.pointCount > 0 && contact.approachSpeed >= w.def.hitEventThreshold) {
+      const ManifoldPoint& p = contact.manifold.points[static_cast<std::size_t>(contact.fastestPoint)];
+      w.contactEvents.hits.push_back({w.shapes[contact.shapeA].id, w.shapes[contact.shapeB].id, p.point,
+                                      contact.manifold.normal, contact.approachSpeed});
+    }
+  }
   // Finalize: apply the deltas, clear forces, refresh the broadphase.
   for (Body& b : w.bodies) {
     if (!b.alive || b.type == BodyType::staticBody) {
@@ -433,8 +477,11 @@ std::optional<RayHit> World::castRayClosest(const Vec2f& origin, const Vec2f& tr
   std::optional<RayHit> best;
   w.tree.rayCast(origin, origin + translation, [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
     const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
-    const Transform2f& xf = w.bodies[s.body].transform;
     const float maxFraction = best ? best->fraction : 1.0f;
+    if (s.sensor) {
+      return maxFraction;
+    }
+    const Transform2f& xf = w.bodies[s.body].transform;
     const RayCastInput local{inverseTransformPoint(xf, origin), inverseRotate(xf.q, translation), maxFraction};
     const CastOutput out = std::visit([&](const auto& g) { return rayCast(g, local); }, s.geometry);
     if (!out.hit) {
@@ -445,5 +492,81 @@ std::optional<RayHit> World::castRayClosest(const Vec2f& origin, const Vec2f& tr
   });
   return best;
 }
+
+std::vector<RayHit> World::castRayAll(const Vec2f& origin, const Vec2f& translation) const {
+  requireFinite(origin, "origin");
+  requireFinite(translation, "translation");
+  const Impl& w = *impl_;
+  std::vector<RayHit> hits;
+  w.tree.rayCast(origin, origin + translation, [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    if (s.sensor) {
+      return 1.0f;
+    }
+    const Transform2f& xf = w.bodies[s.body].transform;
+    const RayCastInput local{inverseTransformPoint(xf, origin), inverseRotate(xf.q, translation), 1.0f};
+    const CastOutput out = std::visit([&](const auto& g) { return rayCast(g, local); }, s.geometry);
+    if (out.hit) {
+      hits.push_back({s.id, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction});
+    }
+    return 1.0f; // keep going: every hit
+  });
+  std::sort(hits.begin(), hits.end(), [](const RayHit& a, const RayHit& b) {
+    return a.fraction != b.fraction ? a.fraction < b.fraction : a.shape.index < b.shape.index;
+  });
+  return hits;
+}
+
+std::vector<ShapeId> World::queryAABB(const AABB& box) const {
+  if (!rigid2d::isValid(box)) {
+    throwInvalid("box", std::nan(""), "AABB must be finite with lower <= upper");
+  }
+  const Impl& w = *impl_;
+  std::vector<ShapeId> found;
+  w.tree.query(box, [&](std::int32_t, std::uint64_t slot64) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    if (overlaps(shapeBox(s, w.bodies[s.body].transform), box)) {
+      found.push_back(s.id);
+    }
+    return true;
+  });
+  std::sort(found.begin(), found.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+  return found;
+}
+
+std::vector<ShapeId> World::queryPoint(const Vec2f& point) const {
+  requireFinite(point, "point");
+  const Impl& w = *impl_;
+  std::vector<ShapeId> found;
+  w.tree.query(AABB{point, point}, [&](std::int32_t, std::uint64_t slot64) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    const Vec2f local = inverseTransformPoint(w.bodies[s.body].transform, point);
+    const bool inside = std::visit(
+        [&](const auto& g) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(g)>, Segment>) {
+            return false;
+          } else {
+            return containsPoint(g, local);
+          }
+        },
+        s.geometry);
+    if (inside) {
+      found.push_back(s.id);
+    }
+    return true;
+  });
+  std::sort(found.begin(), found.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+  return found;
+}
+
+BodyId World::shapeBody(ShapeId shape) const {
+  if (!impl_->shapeIds.isValidId(shape)) {
+    throwInvalid("shape id", static_cast<double>(shape.index), "shape does not exist");
+  }
+  return impl_->bodies[impl_->shapes[shape.index].body].id;
+}
+
+const ContactEvents& World::contactEvents() const noexcept { return impl_->contactEvents; }
+const SensorEvents& World::sensorEvents() const noexcept { return impl_->sensorEvents; }
 
 } // namespace impetus::rigid2d

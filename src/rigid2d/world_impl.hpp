@@ -55,6 +55,8 @@ struct Contact {
   Manifold manifold;
   float friction = 0.0f;
   float restitution = 0.0f;
+  float approachSpeed = 0.0f; ///< the solver's fastest impact this step, m/s (for hit events)
+  int fastestPoint = 0;
 };
 
 /// The solver's per-body state for one step: velocities and the position and rotation deltas
@@ -77,6 +79,10 @@ struct WorldState {
   std::vector<std::uint32_t> moveBuffer;     ///< shapes whose fat box was (re)inserted
   std::map<std::uint64_t, Contact> contacts; ///< by (shapeA << 32 | shapeB): a fixed order
   std::vector<BodyState> states;             ///< by body slot, rebuilt each step
+  ContactEvents contactEvents;
+  SensorEvents sensorEvents;
+  ContactEvents pendingEvents; ///< raised between steps (destroyed bodies): reported by the next step
+  SensorEvents pendingSensorEvents;
 
   Body& body(BodyId id);
   [[nodiscard]] const Body& body(BodyId id) const;

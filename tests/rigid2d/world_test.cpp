@@ -219,6 +219,89 @@ TEST(World2D, ray_cast_finds_the_closest_shape) {
   EXPECT_FALSE(world.castRayClosest({-3.0f, 5.0f}, {0.0f, 3.0f}).has_value());
 }
 
+TEST(World2D, contact_events_report_landing_impact_and_separation) {
+  World world;
+  addGround(world);
+  BodyDef def;
+  def.type = BodyType::dynamicBody;
+  def.position = {0.0f, 5.25f}; // bottom 5 m up
+  const BodyId ball = world.createBody(def);
+  ShapeDef shape;
+  shape.restitution = 0.9f;
+  const ShapeId ballShape = world.createShape(ball, shape, Circle{{}, 0.25f});
+  int begins = 0;
+  int ends = 0;
+  float hitSpeed = 0.0f;
+  for (int i = 0; i < 120 && ends == 0; ++i) {
+    world.step(dt);
+    const ContactEvents& e = world.contactEvents();
+    begins += static_cast<int>(e.begins.size());
+    ends += static_cast<int>(e.ends.size());
+    for (const ContactHitEvent& hit : e.hits) {
+      EXPECT_TRUE(hit.shapeA == ballShape || hit.shapeB == ballShape);
+      hitSpeed = std::max(hitSpeed, hit.approachSpeed);
+    }
+  }
+  EXPECT_EQ(begins, 1);
+  EXPECT_EQ(ends, 1); // it bounced off again
+  // Impact speed sqrt(2 g h) = 10 m/s; the step's sampling and the speculative margin: 3%.
+  EXPECT_NEAR(hitSpeed, 10.0f, 0.3f);
+}
+
+TEST(World2D, sensors_report_overlap_without_responding) {
+  World world;
+  const BodyId zone = world.createBody({});
+  ShapeDef sensor;
+  sensor.isSensor = true;
+  const ShapeId zoneShape = world.createShape(zone, sensor, makeOffsetBox(2.0f, 0.5f, {0.0f, 5.0f}, 0.0f));
+  BodyDef def;
+  def.type = BodyType::dynamicBody;
+  def.position = {0.0f, 8.0f};
+  const BodyId ball = world.createBody(def);
+  world.createShape(ball, {}, Circle{{}, 0.25f});
+  int begins = 0;
+  int ends = 0;
+  for (int i = 0; i < 90; ++i) {
+    world.step(dt);
+    for (const SensorEvent& e : world.sensorEvents().begins) {
+      EXPECT_EQ(e.sensor, zoneShape);
+      ++begins;
+    }
+    ends += static_cast<int>(world.sensorEvents().ends.size());
+    EXPECT_TRUE(world.contactEvents().begins.empty());
+  }
+  EXPECT_EQ(begins, 1);
+  EXPECT_EQ(ends, 1);
+  // It fell straight through: 1.5 s of free fall from 8 m (semi-implicit Euler: + g h t / 2).
+  EXPECT_NEAR(world.position(ball).y, 8.0f - 0.5f * 10.0f * 1.5f * 1.5f, 0.05f);
+}
+
+TEST(World2D, ray_cast_all_queries_and_destroy_events) {
+  World world;
+  const BodyId ground = addGround(world);
+  std::vector<BodyId> boxes;
+  for (int i = 0; i < 3; ++i) {
+    boxes.push_back(addBox(world, {2.0f + 2.0f * static_cast<float>(i), 0.5f}, 0.5f));
+  }
+  const std::vector<RayHit> hits = world.castRayAll({0.0f, 0.5f}, {10.0f, 0.0f});
+  ASSERT_EQ(hits.size(), 3U);
+  EXPECT_NEAR(hits[0].point.x, 1.5f, 1e-5f);
+  EXPECT_NEAR(hits[2].point.x, 5.5f, 1e-5f);
+  EXPECT_EQ(world.shapeBody(hits[1].shape), boxes[1]);
+  EXPECT_EQ(world.queryAABB({{1.9f, 0.4f}, {4.1f, 0.6f}}).size(), 2U);
+  const std::vector<ShapeId> atPoint = world.queryPoint({4.2f, 0.3f});
+  ASSERT_EQ(atPoint.size(), 1U);
+  EXPECT_EQ(world.shapeBody(atPoint[0]), boxes[1]);
+  EXPECT_EQ(world.queryPoint({0.0f, -0.2f}).size(), 1U); // inside the ground
+  (void)ground;
+  for (int i = 0; i < 10; ++i) {
+    world.step(dt);
+  }
+  world.destroyBody(boxes[1]); // resting on the ground: its contact ends
+  world.step(dt);
+  EXPECT_EQ(world.contactEvents().ends.size(), 1U);
+}
+
 TEST(World2D, bad_input_is_an_error) {
   World world;
   BodyDef def;

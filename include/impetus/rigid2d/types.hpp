@@ -56,6 +56,7 @@ struct WorldDef {
   float maxContactPushSpeed = 3.0f;  ///< m/s: how fast overlap is resolved
   float restitutionThreshold = 1.0f; ///< m/s: slower impacts do not bounce
   float maxLinearSpeed = 400.0f;     ///< m/s
+  float hitEventThreshold = 1.0f;    ///< m/s: impacts at least this fast raise a hit event
 };
 
 } // namespace impetus::rigid2d

@@ -21,8 +21,42 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace impetus::rigid2d {
+
+/// Two shapes started touching (their manifold gained points) this step.
+struct ContactBeginEvent {
+  ShapeId shapeA;
+  ShapeId shapeB;
+};
+/// Two shapes stopped touching this step (or one was destroyed).
+struct ContactEndEvent {
+  ShapeId shapeA;
+  ShapeId shapeB;
+};
+/// Two shapes met at least as fast as hitEventThreshold: for impact sounds and damage.
+struct ContactHitEvent {
+  ShapeId shapeA;
+  ShapeId shapeB;
+  Vec2f point;                ///< world, m
+  Vec2f normal;               ///< from A to B
+  float approachSpeed = 0.0f; ///< m/s, > 0
+};
+struct ContactEvents {
+  std::vector<ContactBeginEvent> begins;
+  std::vector<ContactEndEvent> ends;
+  std::vector<ContactHitEvent> hits;
+};
+/// A shape began or stopped overlapping a sensor shape.
+struct SensorEvent {
+  ShapeId sensor;
+  ShapeId visitor;
+};
+struct SensorEvents {
+  std::vector<SensorEvent> begins;
+  std::vector<SensorEvent> ends;
+};
 
 struct RayHit {
   ShapeId shape;
@@ -73,8 +107,20 @@ public:
   /// An instant impulse (N s) at a world point.
   void applyLinearImpulse(BodyId id, const Vec2f& impulse, const Vec2f& point);
 
-  /// The closest shape the ray origin -> origin + translation hits, if any.
+  /// The closest shape the ray origin -> origin + translation hits, if any (sensors excluded).
   [[nodiscard]] std::optional<RayHit> castRayClosest(const Vec2f& origin, const Vec2f& translation) const;
+  /// Every shape the ray hits (sensors excluded), nearest first.
+  [[nodiscard]] std::vector<RayHit> castRayAll(const Vec2f& origin, const Vec2f& translation) const;
+  /// Shapes whose bounding boxes overlap `box`, in a fixed order.
+  [[nodiscard]] std::vector<ShapeId> queryAABB(const AABB& box) const;
+  /// Shapes that contain the world point (sensors included).
+  [[nodiscard]] std::vector<ShapeId> queryPoint(const Vec2f& point) const;
+  /// The body a shape belongs to.
+  [[nodiscard]] BodyId shapeBody(ShapeId shape) const;
+
+  /// Events of the last step, in a fixed order (valid until the next step).
+  [[nodiscard]] const ContactEvents& contactEvents() const noexcept;
+  [[nodiscard]] const SensorEvents& sensorEvents() const noexcept;
 
   [[nodiscard]] const WorldDef& settings() const noexcept;
 
