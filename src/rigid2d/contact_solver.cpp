@@ -132,6 +132,9 @@ void solveContacts(WorldState& w, float dt) {
     }
     const Body& a = w.bodies[sa.body];
     const Body& b = w.bodies[sb.body];
+    if (!a.moving() && !b.moving()) {
+      continue; // asleep (the world wakes a sleeper touched by a moving body before the solve)
+    }
     Constraint c;
     c.bodyA = sa.body;
     c.bodyB = sb.body;
@@ -176,7 +179,7 @@ void solveContacts(WorldState& w, float dt) {
   for (int step = 0; step < substeps; ++step) {
     // Integrate velocities.
     for (Body& body : w.bodies) {
-      if (!body.alive || body.type != BodyType::dynamicBody) {
+      if (!body.moving() || body.type != BodyType::dynamicBody) {
         continue;
       }
       BodyState& s = w.states[body.id.index];
@@ -203,7 +206,7 @@ void solveContacts(WorldState& w, float dt) {
     solve(constraints, w.states, inverseH, w.def.maxContactPushSpeed, true);
     // Integrate positions (as deltas).
     for (Body& body : w.bodies) {
-      if (!body.alive || body.type == BodyType::staticBody) {
+      if (!body.moving()) {
         continue;
       }
       BodyState& s = w.states[body.id.index];

@@ -5,6 +5,7 @@
 #include <impetus/math/validate.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace impetus::rigid2d {
@@ -197,6 +198,9 @@ void collideContacts(WorldState& w) {
   for (auto& [key, contact] : w.contacts) {
     const Shape& a = w.shapes[contact.shapeA];
     const Shape& b = w.shapes[contact.shapeB];
+    if (!w.bodies[a.body].moving() && !w.bodies[b.body].moving()) {
+      continue; // nothing moved: the manifold stands
+    }
     const Manifold old = contact.manifold;
     contact.manifold = collide(a, w.bodies[a.body].transform, b, w.bodies[b.body].transform);
     const bool touching = contact.manifold.pointCount > 0;
@@ -232,6 +236,79 @@ void synchronizeShapes(WorldState& w, Body& b) {
       s.fatBox = enlarge(box, aabbMargin);
       w.tree.moveProxy(s.proxy, s.fatBox);
       w.moveBuffer.push_back(slot);
+    }
+  }
+}
+
+/// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).
+void wakeTouched(WorldState& w) {
+  for (const auto& [key, contact] : w.contacts) {
+    const Shape& sa = w.shapes[contact.shapeA];
+    const Shape& sb = w.shapes[contact.shapeB];
+    if (contact.manifold.pointCount == 0 || sa.sensor || sb.sensor) {
+      continue;
+    }
+    Body& a = w.bodies[sa.body];
+    Body& b = w.bodies[sb.body];
+    if (a.moving() && b.alive && b.type != BodyType::staticBody && !b.awake) {
+      b.wake();
+    } else if (b.moving() && a.alive && a.type != BodyType::staticBody && !a.awake) {
+      a.wake();
+    }
+  }
+}
+
+std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]]; // path halving
+    i = parent[i];
+  }
+  return i;
+}
+
+/// Accumulates rest time and puts islands to sleep whose every body has rested long enough.
+/// Islands are the connected sets of moving bodies joined by touching contacts (static bodies
+/// do not join islands), found by union-find each step.
+void updateSleep(WorldState& w, float dt) {
+  const WorldDef& d = w.def;
+  for (Body& b : w.bodies) {
+    if (!b.moving()) {
+      continue;
+    }
+    const bool slow = lengthSquared(b.linearVelocity) <= d.sleepLinearTolerance * d.sleepLinearTolerance &&
+                      std::abs(b.angularVelocity) <= d.sleepAngularTolerance;
+    b.sleepTime = (b.enableSleep && slow) ? b.sleepTime + dt : 0.0f;
+  }
+  std::vector<std::uint32_t> parent(w.bodies.size());
+  for (std::uint32_t i = 0; i < parent.size(); ++i) {
+    parent[i] = i;
+  }
+  for (const auto& [key, contact] : w.contacts) {
+    const Shape& sa = w.shapes[contact.shapeA];
+    const Shape& sb = w.shapes[contact.shapeB];
+    if (contact.manifold.pointCount == 0 || sa.sensor || sb.sensor || !w.bodies[sa.body].moving() ||
+        !w.bodies[sb.body].moving()) {
+      continue;
+    }
+    const std::uint32_t ra = findRoot(parent, sa.body);
+    const std::uint32_t rb = findRoot(parent, sb.body);
+    if (ra != rb) {
+      parent[std::max(ra, rb)] = std::min(ra, rb); // deterministic: the lower slot is the root
+    }
+  }
+  // The least rest time of each island, at its root.
+  std::vector<float> islandRest(w.bodies.size(), std::numeric_limits<float>::max());
+  for (const Body& b : w.bodies) {
+    if (b.moving()) {
+      float& rest = islandRest[findRoot(parent, b.id.index)];
+      rest = std::min(rest, b.sleepTime);
+    }
+  }
+  for (Body& b : w.bodies) {
+    if (b.moving() && islandRest[findRoot(parent, b.id.index)] >= d.timeToSleep) {
+      b.awake = false;
+      b.linearVelocity = {};
+      b.angularVelocity = 0.0f;
     }
   }
 }
@@ -279,6 +356,8 @@ BodyId World::createBody(const BodyDef& def) {
   b.angularDamping = def.angularDamping;
   b.gravityScale = def.gravityScale;
   b.fixedRotation = def.fixedRotation;
+  b.enableSleep = def.enableSleep;
+  b.awake = def.isAwake;
   b.userData = def.userData;
   b.id = id;
   b.alive = true;
@@ -295,6 +374,8 @@ void World::destroyBody(BodyId id) {
       const bool attached = item.second.shapeA == slot || item.second.shapeB == slot;
       if (attached) {
         reportEnd(w, item.second, w.pendingEvents, w.pendingSensorEvents);
+        const std::uint32_t otherShape = item.second.shapeA == slot ? item.second.shapeB : item.second.shapeA;
+        w.bodies[w.shapes[otherShape].body].wake(); // what rested on it must fall
       }
       return attached;
     });
@@ -395,6 +476,7 @@ void World::setTransform(BodyId id, const Vec2f& position, float angle) {
   requireFinite(position, "position");
   requireFinite(angle, "angle");
   Body& b = impl_->body(id);
+  b.wake();
   b.transform = {position, Rot2f::fromAngle(angle)};
   b.center = transformPoint(b.transform, b.localCenter);
   synchronizeShapes(*impl_, b);
@@ -403,12 +485,14 @@ void World::setLinearVelocity(BodyId id, const Vec2f& v) {
   Body& b = impl_->body(id);
   if (b.type != BodyType::staticBody) {
     b.linearVelocity = requireFinite(v, "linearVelocity");
+    b.wake();
   }
 }
 void World::setAngularVelocity(BodyId id, float av) {
   Body& b = impl_->body(id);
   if (b.type != BodyType::staticBody && !b.fixedRotation) {
     b.angularVelocity = static_cast<float>(requireFinite(av, "angularVelocity"));
+    b.wake();
   }
 }
 void World::applyForce(BodyId id, const Vec2f& force, const Vec2f& point) {
@@ -417,9 +501,12 @@ void World::applyForce(BodyId id, const Vec2f& force, const Vec2f& point) {
   requireFinite(point, "point");
   b.force += force;
   b.torque += cross(point - b.center, force);
+  b.wake();
 }
 void World::applyTorque(BodyId id, float torque) {
-  impl_->body(id).torque += static_cast<float>(requireFinite(torque, "torque"));
+  Body& b = impl_->body(id);
+  b.torque += static_cast<float>(requireFinite(torque, "torque"));
+  b.wake();
 }
 void World::applyLinearImpulse(BodyId id, const Vec2f& impulse, const Vec2f& point) {
   Body& b = impl_->body(id);
@@ -427,6 +514,7 @@ void World::applyLinearImpulse(BodyId id, const Vec2f& impulse, const Vec2f& poi
   requireFinite(point, "point");
   b.linearVelocity += impulse * b.inverseMass;
   b.angularVelocity += b.inverseInertia * cross(point - b.center, impulse);
+  b.wake();
 }
 
 void World::step(float dt) {
@@ -438,10 +526,11 @@ void World::step(float dt) {
   w.sensorEvents = std::exchange(w.pendingSensorEvents, {});
   updatePairs(w);
   collideContacts(w);
+  wakeTouched(w);
   // Solver state per body slot: velocities in, position deltas out.
   w.states.assign(w.bodies.size(), detail::BodyState{});
   for (const Body& b : w.bodies) {
-    if (b.alive && b.type != BodyType::staticBody) {
+    if (b.moving()) {
       w.states[b.id.index] = {b.linearVelocity, b.angularVelocity, {}, Rot2f::identity()};
     }
   }
@@ -455,7 +544,7 @@ void World::step(float dt) {
   }
   // Finalize: apply the deltas, clear forces, refresh the broadphase.
   for (Body& b : w.bodies) {
-    if (!b.alive || b.type == BodyType::staticBody) {
+    if (!b.moving()) {
       continue;
     }
     const detail::BodyState& s = w.states[b.id.index];
@@ -467,6 +556,9 @@ void World::step(float dt) {
     b.force = {};
     b.torque = 0.0f;
     synchronizeShapes(w, b);
+  }
+  if (w.def.enableSleep) {
+    updateSleep(w, dt);
   }
 }
 
@@ -564,6 +656,22 @@ BodyId World::shapeBody(ShapeId shape) const {
     throwInvalid("shape id", static_cast<double>(shape.index), "shape does not exist");
   }
   return impl_->bodies[impl_->shapes[shape.index].body].id;
+}
+
+bool World::isAwake(BodyId id) const { return impl_->body(id).awake; }
+void World::setAwake(BodyId id, bool awake) {
+  Body& b = impl_->body(id);
+  if (awake) {
+    b.wake();
+  } else if (b.type != BodyType::staticBody) {
+    b.awake = false;
+    b.linearVelocity = {};
+    b.angularVelocity = 0.0f;
+  }
+}
+std::size_t World::awakeBodyCount() const noexcept {
+  return static_cast<std::size_t>(
+      std::count_if(impl_->bodies.begin(), impl_->bodies.end(), [](const Body& b) { return b.moving(); }));
 }
 
 const ContactEvents& World::contactEvents() const noexcept { return impl_->contactEvents; }

@@ -43,10 +43,20 @@ struct Body {
   float inertia = 0.0f, inverseInertia = 0.0f;
   float linearDamping = 0.0f, angularDamping = 0.0f, gravityScale = 1.0f;
   bool fixedRotation = false;
+  bool enableSleep = true;
+  bool awake = true;
+  float sleepTime = 0.0f;            ///< s spent slower than the sleep tolerances
   std::vector<std::uint32_t> shapes; ///< shape slots
   std::uint64_t userData = 0;
   BodyId id;
   bool alive = false;
+
+  /// Simulated this step: alive, not static, awake.
+  [[nodiscard]] bool moving() const noexcept { return alive && type != BodyType::staticBody && awake; }
+  void wake() noexcept {
+    awake = true;
+    sleepTime = 0.0f;
+  }
 };
 
 struct Contact {

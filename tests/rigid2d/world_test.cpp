@@ -111,7 +111,9 @@ TEST(World2D, box_on_a_slope_sticks_iff_tan_theta_below_mu) {
 }
 
 TEST(World2D, ten_box_stack_stands_still) {
-  World world;
+  WorldDef def;
+  def.enableSleep = false; // the solver alone must hold it
+  World world(def);
   addGround(world);
   std::vector<BodyId> boxes;
   for (int i = 0; i < 10; ++i) {
@@ -134,7 +136,9 @@ TEST(World2D, ten_box_stack_stands_still) {
 }
 
 TEST(World2D, pyramid_of_twenty_levels_stands) {
-  World world;
+  WorldDef def;
+  def.enableSleep = false;
+  World world(def);
   addGround(world);
   BodyId top;
   for (int row = 0; row < 20; ++row) {
@@ -300,6 +304,57 @@ TEST(World2D, ray_cast_all_queries_and_destroy_events) {
   world.destroyBody(boxes[1]); // resting on the ground: its contact ends
   world.step(dt);
   EXPECT_EQ(world.contactEvents().ends.size(), 1U);
+}
+
+TEST(World2D, resting_bodies_fall_asleep_and_wake_when_disturbed) {
+  World world;
+  addGround(world);
+  const BodyId lower = addBox(world, {0.0f, 0.5f}, 0.5f);
+  const BodyId upper = addBox(world, {0.0f, 1.5f}, 0.5f);
+  for (int i = 0; i < 180; ++i) {
+    world.step(dt);
+  }
+  EXPECT_FALSE(world.isAwake(lower));
+  EXPECT_FALSE(world.isAwake(upper));
+  EXPECT_EQ(world.awakeBodyCount(), 0U);
+  // Asleep, nothing moves at all.
+  const Transform2f before = world.transform(upper);
+  for (int i = 0; i < 60; ++i) {
+    world.step(dt);
+  }
+  EXPECT_EQ(world.transform(upper), before);
+  // A ball dropped on the stack wakes it.
+  BodyDef ballDef;
+  ballDef.type = BodyType::dynamicBody;
+  ballDef.position = {0.0f, 4.0f};
+  const BodyId ball = world.createBody(ballDef);
+  world.createShape(ball, {}, Circle{{}, 0.25f});
+  bool woke = false;
+  for (int i = 0; i < 60 && !woke; ++i) {
+    world.step(dt);
+    woke = world.isAwake(upper);
+  }
+  EXPECT_TRUE(woke);
+  // Settled again, removing the lower box wakes the upper one, which falls.
+  for (int i = 0; i < 240; ++i) {
+    world.step(dt);
+  }
+  EXPECT_FALSE(world.isAwake(upper));
+  const float height = world.position(upper).y;
+  world.destroyBody(lower);
+  for (int i = 0; i < 60; ++i) {
+    world.step(dt);
+  }
+  EXPECT_LT(world.position(upper).y, height - 0.5f);
+  // An impulse wakes a sleeper.
+  for (int i = 0; i < 240; ++i) {
+    world.step(dt);
+  }
+  EXPECT_FALSE(world.isAwake(upper));
+  world.applyLinearImpulse(upper, {5.0f, 0.0f}, world.worldCenterOfMass(upper));
+  EXPECT_TRUE(world.isAwake(upper));
+  world.step(dt);
+  EXPECT_GT(world.linearVelocity(upper).x, 0.0f);
 }
 
 TEST(World2D, bad_input_is_an_error) {

@@ -27,7 +27,9 @@ struct BodyDef {
   float angularDamping = 0.0f;  ///< 1/s
   float gravityScale = 1.0f;
   bool fixedRotation = false;
-  bool bullet = false; ///< continuous collision against dynamic bodies too (CCD: not yet)
+  bool bullet = false;     ///< continuous collision against dynamic bodies too (CCD: not yet)
+  bool enableSleep = true; ///< may fall asleep when at rest
+  bool isAwake = true;
   std::uint64_t userData = 0;
 };
 
@@ -53,10 +55,14 @@ struct WorldDef {
   int substeps = 4;            ///< solver substeps per step
   float contactHertz = 30.0f;  ///< contact stiffness, Hz (capped at a quarter of the substep rate)
   float contactDampingRatio = 10.0f;
-  float maxContactPushSpeed = 3.0f;  ///< m/s: how fast overlap is resolved
-  float restitutionThreshold = 1.0f; ///< m/s: slower impacts do not bounce
-  float maxLinearSpeed = 400.0f;     ///< m/s
-  float hitEventThreshold = 1.0f;    ///< m/s: impacts at least this fast raise a hit event
+  float maxContactPushSpeed = 3.0f;     ///< m/s: how fast overlap is resolved
+  float restitutionThreshold = 1.0f;    ///< m/s: slower impacts do not bounce
+  float maxLinearSpeed = 400.0f;        ///< m/s
+  float hitEventThreshold = 1.0f;       ///< m/s: impacts at least this fast raise a hit event
+  bool enableSleep = true;              ///< islands at rest fall asleep and cost (almost) nothing
+  float timeToSleep = 0.5f;             ///< s an island must stay slow to fall asleep
+  float sleepLinearTolerance = 0.05f;   ///< m/s
+  float sleepAngularTolerance = 0.035f; ///< rad/s (2 degrees per second)
 };
 
 } // namespace impetus::rigid2d

@@ -98,6 +98,13 @@ public:
   [[nodiscard]] float angularVelocity(BodyId id) const;
   [[nodiscard]] float mass(BodyId id) const;
   [[nodiscard]] float rotationalInertia(BodyId id) const; ///< about the centre of mass
+  /// Sleeping: bodies whose whole island (bodies joined by touching contacts) has been slower
+  /// than the sleep tolerances for timeToSleep fall asleep, and are neither moved nor solved
+  /// until something touches them or the API changes them.
+  [[nodiscard]] bool isAwake(BodyId id) const;
+  void setAwake(BodyId id, bool awake);
+  [[nodiscard]] std::size_t awakeBodyCount() const noexcept;
+  /// Every API change below wakes the body.
   void setTransform(BodyId id, const Vec2f& position, float angle);
   void setLinearVelocity(BodyId id, const Vec2f& v);
   void setAngularVelocity(BodyId id, float w);
