@@ -10,8 +10,6 @@
 
 namespace impetus::rigid2d {
 
-struct World::Impl : detail::WorldState {};
-
 namespace detail {
 
 Body& WorldState::body(BodyId id) {
@@ -23,6 +21,10 @@ Body& WorldState::body(BodyId id) {
 
 const Body& WorldState::body(BodyId id) const { return const_cast<WorldState*>(this)->body(id); }
 
+AABB shapeBox(const Shape& s, const Transform2f& xf) {
+  return std::visit([&](const auto& g) { return computeAABB(g, xf); }, s.geometry);
+}
+
 } // namespace detail
 
 namespace {
@@ -30,14 +32,11 @@ namespace {
 using detail::Body;
 using detail::Contact;
 using detail::Shape;
+using detail::shapeBox;
 using detail::WorldState;
 
 std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
   return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-}
-
-AABB shapeBox(const Shape& s, const Transform2f& xf) {
-  return std::visit([&](const auto& g) { return computeAABB(g, xf); }, s.geometry);
 }
 
 bool shouldCollide(const Filter& a, const Filter& b) {
@@ -236,162 +235,6 @@ void synchronizeShapes(WorldState& w, Body& b) {
       s.fatBox = enlarge(box, aabbMargin);
       w.tree.moveProxy(s.proxy, s.fatBox);
       w.moveBuffer.push_back(slot);
-    }
-  }
-}
-
-/// The radius of the largest circle around the centre of mass inside all of the body's shapes
-/// that contain it (its core): a swept circle of this radius cannot pass through anything the
-/// body would collide with.
-float coreRadius(const WorldState& w, const Body& b) {
-  float core = std::numeric_limits<float>::max();
-  for (std::uint32_t slot : b.shapes) {
-    const Shape& s = w.shapes[slot];
-    if (s.sensor) {
-      continue;
-    }
-    const float r = std::visit(
-        [&](const auto& g) -> float {
-          using G = std::decay_t<decltype(g)>;
-          if constexpr (std::is_same_v<G, Circle>) {
-            return g.radius - distance(g.center, b.localCenter);
-          } else if constexpr (std::is_same_v<G, Capsule>) {
-            return g.radius;
-          } else if constexpr (std::is_same_v<G, Polygon>) {
-            float inner = std::numeric_limits<float>::max();
-            for (int i = 0; i < g.count; ++i) {
-              const auto k = static_cast<std::size_t>(i);
-              inner = std::min(inner, dot(g.normals[k], g.vertices[k] - b.localCenter));
-            }
-            return inner + g.radius;
-          } else {
-            return 0.0f;
-          }
-        },
-        s.geometry);
-    core = std::min(core, r);
-  }
-  return core == std::numeric_limits<float>::max() ? 0.0f : std::max(core, 0.0f);
-}
-
-/// Continuous collision against static shapes: a body that moved more than its core radius this
-/// step could have passed through a thin static shape. Its core circle is swept from `start` to
-/// `end` (a ray against each static shape inflated by the core radius) and stopped just before
-/// the first hit; the speculative contact takes over next step. Returns the allowed end.
-Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start, const Vec2f& end) {
-  const float core = coreRadius(w, b);
-  const Vec2f motion = end - start;
-  if (core <= 0.0f || lengthSquared(motion) <= core * core) {
-    return end; // slow: the discrete contacts see everything it can meet
-  }
-  const AABB swept = enlarge({min(start, end), max(start, end)}, core);
-  float first = 1.0f;
-  w.tree.query(swept, [&](std::int32_t, std::uint64_t slot64) {
-    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
-    const Body& other = w.bodies[s.body];
-    if (other.type != BodyType::staticBody || s.sensor) {
-      return true;
-    }
-    const Transform2f& xf = other.transform;
-    const RayCastInput ray{inverseTransformPoint(xf, start), inverseRotate(xf.q, motion), first};
-    const CastOutput out = std::visit(
-        [&](const auto& g) {
-          using G = std::decay_t<decltype(g)>;
-          if constexpr (std::is_same_v<G, Circle>) {
-            return rayCast(Circle{g.center, g.radius + core}, ray);
-          } else if constexpr (std::is_same_v<G, Capsule>) {
-            return rayCast(Capsule{g.center1, g.center2, g.radius + core}, ray);
-          } else if constexpr (std::is_same_v<G, Segment>) {
-            return rayCast(Capsule{g.point1, g.point2, core}, ray);
-          } else {
-            Polygon inflated = g;
-            inflated.radius += core;
-            return rayCast(inflated, ray);
-          }
-        },
-        s.geometry);
-    if (out.hit && out.fraction < first) {
-      first = out.fraction;
-    }
-    return true;
-  });
-  if (first >= 1.0f) {
-    return end;
-  }
-  // Stop a linear slop short of the surface, along the motion.
-  const float travelled = std::max(0.0f, first * length(motion) - linearSlop);
-  return start + normalize(motion) * travelled;
-}
-
-/// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).
-void wakeTouched(WorldState& w) {
-  for (const auto& [key, contact] : w.contacts) {
-    const Shape& sa = w.shapes[contact.shapeA];
-    const Shape& sb = w.shapes[contact.shapeB];
-    if (contact.manifold.pointCount == 0 || sa.sensor || sb.sensor) {
-      continue;
-    }
-    Body& a = w.bodies[sa.body];
-    Body& b = w.bodies[sb.body];
-    if (a.moving() && b.alive && b.type != BodyType::staticBody && !b.awake) {
-      b.wake();
-    } else if (b.moving() && a.alive && a.type != BodyType::staticBody && !a.awake) {
-      a.wake();
-    }
-  }
-}
-
-std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]]; // path halving
-    i = parent[i];
-  }
-  return i;
-}
-
-/// Accumulates rest time and puts islands to sleep whose every body has rested long enough.
-/// Islands are the connected sets of moving bodies joined by touching contacts (static bodies
-/// do not join islands), found by union-find each step.
-void updateSleep(WorldState& w, float dt) {
-  const WorldDef& d = w.def;
-  for (Body& b : w.bodies) {
-    if (!b.moving()) {
-      continue;
-    }
-    const bool slow = lengthSquared(b.linearVelocity) <= d.sleepLinearTolerance * d.sleepLinearTolerance &&
-                      std::abs(b.angularVelocity) <= d.sleepAngularTolerance;
-    b.sleepTime = (b.enableSleep && slow) ? b.sleepTime + dt : 0.0f;
-  }
-  std::vector<std::uint32_t> parent(w.bodies.size());
-  for (std::uint32_t i = 0; i < parent.size(); ++i) {
-    parent[i] = i;
-  }
-  for (const auto& [key, contact] : w.contacts) {
-    const Shape& sa = w.shapes[contact.shapeA];
-    const Shape& sb = w.shapes[contact.shapeB];
-    if (contact.manifold.pointCount == 0 || sa.sensor || sb.sensor || !w.bodies[sa.body].moving() ||
-        !w.bodies[sb.body].moving()) {
-      continue;
-    }
-    const std::uint32_t ra = findRoot(parent, sa.body);
-    const std::uint32_t rb = findRoot(parent, sb.body);
-    if (ra != rb) {
-      parent[std::max(ra, rb)] = std::min(ra, rb); // deterministic: the lower slot is the root
-    }
-  }
-  // The least rest time of each island, at its root.
-  std::vector<float> islandRest(w.bodies.size(), std::numeric_limits<float>::max());
-  for (const Body& b : w.bodies) {
-    if (b.moving()) {
-      float& rest = islandRest[findRoot(parent, b.id.index)];
-      rest = std::min(rest, b.sleepTime);
-    }
-  }
-  for (Body& b : w.bodies) {
-    if (b.moving() && islandRest[findRoot(parent, b.id.index)] >= d.timeToSleep) {
-      b.awake = false;
-      b.linearVelocity = {};
-      b.angularVelocity = 0.0f;
     }
   }
 }
@@ -609,7 +452,7 @@ void World::step(float dt) {
   w.sensorEvents = std::exchange(w.pendingSensorEvents, {});
   updatePairs(w);
   collideContacts(w);
-  wakeTouched(w);
+  detail::wakeTouched(w);
   // Solver state per body slot: velocities in, position deltas out.
   w.states.assign(w.bodies.size(), detail::BodyState{});
   for (const Body& b : w.bodies) {
@@ -636,7 +479,7 @@ void World::step(float dt) {
     const Vec2f start = b.center;
     b.center += s.dp;
     if (b.type == BodyType::dynamicBody) {
-      b.center = sweepAgainstStatic(w, b, start, b.center);
+      b.center = detail::sweepAgainstStatic(w, b, start, b.center);
     }
     const Rot2f q = normalize(mul(s.dq, b.transform.q));
     b.transform = {b.center - rotate(q, b.localCenter), q};
@@ -645,104 +488,8 @@ void World::step(float dt) {
     synchronizeShapes(w, b);
   }
   if (w.def.enableSleep) {
-    updateSleep(w, dt);
+    detail::updateSleep(w, dt);
   }
-}
-
-std::optional<RayHit> World::castRayClosest(const Vec2f& origin, const Vec2f& translation) const {
-  requireFinite(origin, "origin");
-  requireFinite(translation, "translation");
-  const Impl& w = *impl_;
-  std::optional<RayHit> best;
-  w.tree.rayCast(origin, origin + translation, [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
-    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
-    const float maxFraction = best ? best->fraction : 1.0f;
-    if (s.sensor) {
-      return maxFraction;
-    }
-    const Transform2f& xf = w.bodies[s.body].transform;
-    const RayCastInput local{inverseTransformPoint(xf, origin), inverseRotate(xf.q, translation), maxFraction};
-    const CastOutput out = std::visit([&](const auto& g) { return rayCast(g, local); }, s.geometry);
-    if (!out.hit) {
-      return maxFraction;
-    }
-    best = RayHit{s.id, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction};
-    return out.fraction;
-  });
-  return best;
-}
-
-std::vector<RayHit> World::castRayAll(const Vec2f& origin, const Vec2f& translation) const {
-  requireFinite(origin, "origin");
-  requireFinite(translation, "translation");
-  const Impl& w = *impl_;
-  std::vector<RayHit> hits;
-  w.tree.rayCast(origin, origin + translation, [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
-    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
-    if (s.sensor) {
-      return 1.0f;
-    }
-    const Transform2f& xf = w.bodies[s.body].transform;
-    const RayCastInput local{inverseTransformPoint(xf, origin), inverseRotate(xf.q, translation), 1.0f};
-    const CastOutput out = std::visit([&](const auto& g) { return rayCast(g, local); }, s.geometry);
-    if (out.hit) {
-      hits.push_back({s.id, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction});
-    }
-    return 1.0f; // keep going: every hit
-  });
-  std::sort(hits.begin(), hits.end(), [](const RayHit& a, const RayHit& b) {
-    return a.fraction != b.fraction ? a.fraction < b.fraction : a.shape.index < b.shape.index;
-  });
-  return hits;
-}
-
-std::vector<ShapeId> World::queryAABB(const AABB& box) const {
-  if (!rigid2d::isValid(box)) {
-    throwInvalid("box", std::nan(""), "AABB must be finite with lower <= upper");
-  }
-  const Impl& w = *impl_;
-  std::vector<ShapeId> found;
-  w.tree.query(box, [&](std::int32_t, std::uint64_t slot64) {
-    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
-    if (overlaps(shapeBox(s, w.bodies[s.body].transform), box)) {
-      found.push_back(s.id);
-    }
-    return true;
-  });
-  std::sort(found.begin(), found.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
-  return found;
-}
-
-std::vector<ShapeId> World::queryPoint(const Vec2f& point) const {
-  requireFinite(point, "point");
-  const Impl& w = *impl_;
-  std::vector<ShapeId> found;
-  w.tree.query(AABB{point, point}, [&](std::int32_t, std::uint64_t slot64) {
-    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
-    const Vec2f local = inverseTransformPoint(w.bodies[s.body].transform, point);
-    const bool inside = std::visit(
-        [&](const auto& g) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(g)>, Segment>) {
-            return false;
-          } else {
-            return containsPoint(g, local);
-          }
-        },
-        s.geometry);
-    if (inside) {
-      found.push_back(s.id);
-    }
-    return true;
-  });
-  std::sort(found.begin(), found.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
-  return found;
-}
-
-BodyId World::shapeBody(ShapeId shape) const {
-  if (!impl_->shapeIds.isValidId(shape)) {
-    throwInvalid("shape id", static_cast<double>(shape.index), "shape does not exist");
-  }
-  return impl_->bodies[impl_->shapes[shape.index].body].id;
 }
 
 bool World::isAwake(BodyId id) const { return impl_->body(id).awake; }

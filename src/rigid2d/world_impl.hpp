@@ -98,8 +98,25 @@ struct WorldState {
   [[nodiscard]] const Body& body(BodyId id) const;
 };
 
+/// A shape's world bounding box.
+[[nodiscard]] AABB shapeBox(const Shape& s, const Transform2f& xf);
+
 // contact_solver.cpp
 /// The substepped soft contact solve over every touching contact; updates `states`.
 void solveContacts(WorldState& w, float dt);
 
+// island.cpp
+/// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).
+void wakeTouched(WorldState& w);
+/// Accumulates rest time and puts islands to sleep that have rested long enough.
+void updateSleep(WorldState& w, float dt);
+
+// continuous.cpp
+/// Where a fast body may go from `start` toward `end` without passing a static shape.
+[[nodiscard]] Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start, const Vec2f& end);
+
 } // namespace impetus::rigid2d::detail
+
+namespace impetus::rigid2d {
+struct World::Impl : detail::WorldState {};
+} // namespace impetus::rigid2d

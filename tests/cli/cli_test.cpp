@@ -1,5 +1,7 @@
 // Black-box tests of the `impetus` executable: exit codes, one-line errors, JSON output, and
 // the calc models' numbers against closed forms and the book's worked example.
+#include "cli_process.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
@@ -15,63 +17,9 @@ namespace {
 
 using nlohmann::json;
 
-struct CliRun {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string quote(const std::string& arg) {
-  std::string q(1, '\'');
-  for (char c : arg) {
-    if (c == '\'') {
-      q.append("'\\''");
-    } else {
-      q.push_back(c);
-    }
-  }
-  q.push_back('\'');
-  return q;
-}
-
-/// Runs the CLI with `args`, capturing stdout and stderr separately.
-CliRun impetus(const std::vector<std::string>& args) {
-  // ctest runs tests in parallel processes: one stderr file per test and call.
-  static int calls = 0;
-  const std::string errPath = ::testing::TempDir() + "impetus_stderr_" +
-                              ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
-                              std::to_string(++calls) + ".txt";
-  std::string command = quote(IMPETUS_CLI_PATH);
-  for (const std::string& a : args) {
-    command.push_back(' ');
-    command.append(quote(a));
-  }
-  command.append(" 2>").append(quote(errPath));
-  CliRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) {
-    return run;
-  }
-  std::array<char, 4096> buffer{};
-  size_t n = 0;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-    run.out.append(buffer.data(), n);
-  }
-  const int raw = pclose(pipe);
-  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream err(errPath);
-  std::stringstream ss;
-  ss << err.rdbuf();
-  run.err = ss.str();
-  return run;
-}
-
-/// Exit status 2 and exactly one line on stderr that contains `needle`.
-void expectUsageError(const CliRun& run, const std::string& needle) {
-  EXPECT_EQ(run.status, 2);
-  EXPECT_NE(run.err.find(needle), std::string::npos) << run.err;
-  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
-}
+using impetus::testing::CliRun;
+using impetus::testing::expectUsageError;
+using impetus::testing::impetus;
 
 double output(const json& doc, const std::string& name) { return doc.at("outputs").at(name).at("value").get<double>(); }
 

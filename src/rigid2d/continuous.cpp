@@ -1,0 +1,95 @@
+// Continuous collision: fast bodies against static shapes.
+#include "rigid2d/world_impl.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace impetus::rigid2d::detail {
+namespace {
+
+/// The radius of the largest circle around the centre of mass inside all of the body's shapes
+/// that contain it (its core): a swept circle of this radius cannot pass through anything the
+/// body would collide with.
+float coreRadius(const WorldState& w, const Body& b) {
+  float core = std::numeric_limits<float>::max();
+  for (std::uint32_t slot : b.shapes) {
+    const Shape& s = w.shapes[slot];
+    if (s.sensor) {
+      continue;
+    }
+    const float r = std::visit(
+        [&](const auto& g) -> float {
+          using G = std::decay_t<decltype(g)>;
+          if constexpr (std::is_same_v<G, Circle>) {
+            return g.radius - distance(g.center, b.localCenter);
+          } else if constexpr (std::is_same_v<G, Capsule>) {
+            return g.radius;
+          } else if constexpr (std::is_same_v<G, Polygon>) {
+            float inner = std::numeric_limits<float>::max();
+            for (int i = 0; i < g.count; ++i) {
+              const auto k = static_cast<std::size_t>(i);
+              inner = std::min(inner, dot(g.normals[k], g.vertices[k] - b.localCenter));
+            }
+            return inner + g.radius;
+          } else {
+            return 0.0f;
+          }
+        },
+        s.geometry);
+    core = std::min(core, r);
+  }
+  return core == std::numeric_limits<float>::max() ? 0.0f : std::max(core, 0.0f);
+}
+
+} // namespace
+
+/// Continuous collision against static shapes: a body that moved more than its core radius this
+/// step could have passed through a thin static shape. Its core circle is swept from `start` to
+/// `end` (a ray against each static shape inflated by the core radius) and stopped just before
+/// the first hit; the speculative contact takes over next step. Returns the allowed end.
+Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start, const Vec2f& end) {
+  const float core = coreRadius(w, b);
+  const Vec2f motion = end - start;
+  if (core <= 0.0f || lengthSquared(motion) <= core * core) {
+    return end; // slow: the discrete contacts see everything it can meet
+  }
+  const AABB swept = enlarge({min(start, end), max(start, end)}, core);
+  float first = 1.0f;
+  w.tree.query(swept, [&](std::int32_t, std::uint64_t slot64) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    const Body& other = w.bodies[s.body];
+    if (other.type != BodyType::staticBody || s.sensor) {
+      return true;
+    }
+    const Transform2f& xf = other.transform;
+    const RayCastInput ray{inverseTransformPoint(xf, start), inverseRotate(xf.q, motion), first};
+    const CastOutput out = std::visit(
+        [&](const auto& g) {
+          using G = std::decay_t<decltype(g)>;
+          if constexpr (std::is_same_v<G, Circle>) {
+            return rayCast(Circle{g.center, g.radius + core}, ray);
+          } else if constexpr (std::is_same_v<G, Capsule>) {
+            return rayCast(Capsule{g.center1, g.center2, g.radius + core}, ray);
+          } else if constexpr (std::is_same_v<G, Segment>) {
+            return rayCast(Capsule{g.point1, g.point2, core}, ray);
+          } else {
+            Polygon inflated = g;
+            inflated.radius += core;
+            return rayCast(inflated, ray);
+          }
+        },
+        s.geometry);
+    if (out.hit && out.fraction < first) {
+      first = out.fraction;
+    }
+    return true;
+  });
+  if (first >= 1.0f) {
+    return end;
+  }
+  // Stop a linear slop short of the surface, along the motion.
+  const float travelled = std::max(0.0f, first * length(motion) - linearSlop);
+  return start + normalize(motion) * travelled;
+}
+
+} // namespace impetus::rigid2d::detail

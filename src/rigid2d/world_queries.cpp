@@ -1,0 +1,110 @@
+// Ray casts and overlap queries against the world's shapes.
+#include "rigid2d/world_impl.hpp"
+
+#include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
+
+#include <algorithm>
+
+namespace impetus::rigid2d {
+
+using detail::Shape;
+using detail::shapeBox;
+
+std::optional<RayHit> World::castRayClosest(const Vec2f& origin, const Vec2f& translation) const {
+  requireFinite(origin, "origin");
+  requireFinite(translation, "translation");
+  const Impl& w = *impl_;
+  std::optional<RayHit> best;
+  w.tree.rayCast(origin, origin + translation, [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    const float maxFraction = best ? best->fraction : 1.0f;
+    if (s.sensor) {
+      return maxFraction;
+    }
+    const Transform2f& xf = w.bodies[s.body].transform;
+    const RayCastInput local{inverseTransformPoint(xf, origin), inverseRotate(xf.q, translation), maxFraction};
+    const CastOutput out = std::visit([&](const auto& g) { return rayCast(g, local); }, s.geometry);
+    if (!out.hit) {
+      return maxFraction;
+    }
+    best = RayHit{s.id, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction};
+    return out.fraction;
+  });
+  return best;
+}
+
+std::vector<RayHit> World::castRayAll(const Vec2f& origin, const Vec2f& translation) const {
+  requireFinite(origin, "origin");
+  requireFinite(translation, "translation");
+  const Impl& w = *impl_;
+  std::vector<RayHit> hits;
+  w.tree.rayCast(origin, origin + translation, [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    if (s.sensor) {
+      return 1.0f;
+    }
+    const Transform2f& xf = w.bodies[s.body].transform;
+    const RayCastInput local{inverseTransformPoint(xf, origin), inverseRotate(xf.q, translation), 1.0f};
+    const CastOutput out = std::visit([&](const auto& g) { return rayCast(g, local); }, s.geometry);
+    if (out.hit) {
+      hits.push_back({s.id, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction});
+    }
+    return 1.0f; // keep going: every hit
+  });
+  std::sort(hits.begin(), hits.end(), [](const RayHit& a, const RayHit& b) {
+    return a.fraction != b.fraction ? a.fraction < b.fraction : a.shape.index < b.shape.index;
+  });
+  return hits;
+}
+
+std::vector<ShapeId> World::queryAABB(const AABB& box) const {
+  if (!rigid2d::isValid(box)) {
+    throwInvalid("box", std::nan(""), "AABB must be finite with lower <= upper");
+  }
+  const Impl& w = *impl_;
+  std::vector<ShapeId> found;
+  w.tree.query(box, [&](std::int32_t, std::uint64_t slot64) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    if (overlaps(shapeBox(s, w.bodies[s.body].transform), box)) {
+      found.push_back(s.id);
+    }
+    return true;
+  });
+  std::sort(found.begin(), found.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+  return found;
+}
+
+std::vector<ShapeId> World::queryPoint(const Vec2f& point) const {
+  requireFinite(point, "point");
+  const Impl& w = *impl_;
+  std::vector<ShapeId> found;
+  w.tree.query(AABB{point, point}, [&](std::int32_t, std::uint64_t slot64) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    const Vec2f local = inverseTransformPoint(w.bodies[s.body].transform, point);
+    const bool inside = std::visit(
+        [&](const auto& g) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(g)>, Segment>) {
+            return false;
+          } else {
+            return containsPoint(g, local);
+          }
+        },
+        s.geometry);
+    if (inside) {
+      found.push_back(s.id);
+    }
+    return true;
+  });
+  std::sort(found.begin(), found.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+  return found;
+}
+
+BodyId World::shapeBody(ShapeId shape) const {
+  if (!impl_->shapeIds.isValidId(shape)) {
+    throwInvalid("shape id", static_cast<double>(shape.index), "shape does not exist");
+  }
+  return impl_->bodies[impl_->shapes[shape.index].body].id;
+}
+
+} // namespace impetus::rigid2d
