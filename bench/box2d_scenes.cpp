@@ -1,0 +1,59 @@
+// The 2D benchmark scenes built in Box2D 2.4.1 (see box2d_scenes.hpp).
+#include "box2d_scenes.hpp"
+
+namespace impetus::bench {
+
+Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
+  Box2DScene built{std::make_unique<b2World>(b2Vec2(sceneGravity.x, sceneGravity.y)), {}};
+  built.world->SetAllowSleeping(false);
+  built.world->SetContinuousPhysics(continuous);
+  built.bodies.reserve(scene.bodies.size());
+  for (const SceneBody& b : scene.bodies) {
+    b2BodyDef bd;
+    switch (b.type) {
+    case rigid2d::BodyType::staticBody:
+      bd.type = b2_staticBody;
+      break;
+    case rigid2d::BodyType::kinematicBody:
+      bd.type = b2_kinematicBody;
+      break;
+    case rigid2d::BodyType::dynamicBody:
+      bd.type = b2_dynamicBody;
+      break;
+    }
+    bd.position.Set(b.position.x, b.position.y);
+    bd.angularVelocity = b.angularVelocity;
+    bd.allowSleep = false;
+    built.bodies.push_back(built.world->CreateBody(&bd));
+  }
+  for (const SceneShape& s : scene.shapes) {
+    b2FixtureDef fd;
+    fd.density = sceneDensity;
+    fd.friction = sceneFriction;
+    fd.restitution = 0.0f;
+    b2PolygonShape box;
+    b2CircleShape circle;
+    if (s.kind == SceneShape::Kind::circle) {
+      circle.m_p.Set(s.center.x, s.center.y);
+      circle.m_radius = s.radius;
+      fd.shape = &circle;
+    } else {
+      box.SetAsBox(s.halfWidth, s.halfHeight, b2Vec2(s.center.x, s.center.y), s.angle);
+      fd.shape = &box;
+    }
+    built.bodies[s.body]->CreateFixture(&fd);
+  }
+  return built;
+}
+
+std::vector<Transform2f> bodyTransforms(const Box2DScene& built) {
+  std::vector<Transform2f> out;
+  out.reserve(built.bodies.size());
+  for (const b2Body* body : built.bodies) {
+    const b2Transform& xf = body->GetTransform();
+    out.push_back({{xf.p.x, xf.p.y}, {xf.q.c, xf.q.s}});
+  }
+  return out;
+}
+
+} // namespace impetus::bench

@@ -1,0 +1,216 @@
+// The 2D benchmark scenes are built as bench/rigid2d_scenes.hpp describes them (counts, sizes,
+// no initial overlap) and behave in Impetus: finite, standing, falling where they should. The
+// quality figures the benchmark prints (sink, overlap) measure what they say.
+#include "rigid2d_scenes.hpp"
+
+#include <impetus/error.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace {
+
+using impetus::Transform2f;
+using impetus::Vec2f;
+using impetus::rigid2d::BodyType;
+namespace bench = impetus::bench;
+
+std::size_t countOf(const bench::Rigid2dScene& scene, BodyType type) {
+  std::size_t n = 0;
+  for (const bench::SceneBody& b : scene.bodies) {
+    n += b.type == type ? 1 : 0;
+  }
+  return n;
+}
+
+void step(bench::ImpetusScene& built, int steps) {
+  for (int i = 0; i < steps; ++i) {
+    built.world.step(bench::sceneTimeStep);
+  }
+}
+
+TEST(LargePyramid, is_5050_boxes_of_half_size_half_a_metre_on_a_200_by_2_ground_box) {
+  const bench::Rigid2dScene scene = bench::largePyramidScene();
+  EXPECT_EQ(scene.name, "large_pyramid");
+  EXPECT_EQ(scene.bodies.size(), 5051u);
+  EXPECT_EQ(scene.shapes.size(), 5051u);
+  EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 5050u);
+  EXPECT_EQ(countOf(scene, BodyType::staticBody), 1u);
+  EXPECT_EQ(scene.defaultSteps, 500);
+  const bench::SceneShape& ground = scene.shapes[0];
+  EXPECT_EQ(ground.kind, bench::SceneShape::Kind::box);
+  EXPECT_FLOAT_EQ(ground.halfWidth, 100.0f);
+  EXPECT_FLOAT_EQ(ground.halfHeight, 1.0f);
+  EXPECT_FLOAT_EQ(scene.bodies[0].position.y + ground.center.y + ground.halfHeight, 0.0f); // top at y = 0
+  for (std::size_t i = 1; i < scene.shapes.size(); ++i) {
+    EXPECT_FLOAT_EQ(scene.shapes[i].halfWidth, 0.5f);
+    EXPECT_FLOAT_EQ(scene.shapes[i].halfHeight, 0.5f);
+  }
+  // The base row spans x in [-50, 50] on the ground; the top box stands on x = 0 at y = 99.5.
+  EXPECT_FLOAT_EQ(scene.bodies[1].position.x, -49.5f);
+  EXPECT_FLOAT_EQ(scene.bodies[1].position.y, 0.5f);
+  EXPECT_FLOAT_EQ(scene.bodies[100].position.x, 49.5f);
+  ASSERT_EQ(scene.tops.size(), 1u);
+  EXPECT_FLOAT_EQ(scene.bodies[scene.tops[0]].position.x, 0.0f);
+  EXPECT_FLOAT_EQ(scene.bodies[scene.tops[0]].position.y, 99.5f);
+}
+
+TEST(LargePyramid, starts_touching_without_overlap) {
+  const bench::Rigid2dScene scene = bench::largePyramidScene(30);
+  std::vector<Transform2f> start;
+  for (const bench::SceneBody& b : scene.bodies) {
+    start.push_back({b.position, impetus::Rot2f::identity()});
+  }
+  EXPECT_LT(bench::largestOverlap(scene, start), 1.0e-5f);
+  EXPECT_FLOAT_EQ(bench::topSink(scene, start), 0.0f);
+}
+
+TEST(LargePyramid, built_in_impetus_stays_finite_and_standing) {
+  // A smaller pyramid of the same construction keeps the test fast.
+  const bench::Rigid2dScene scene = bench::largePyramidScene(20);
+  bench::ImpetusScene built = bench::buildImpetusScene(scene);
+  EXPECT_EQ(built.world.bodyCount(), 211u);
+  EXPECT_EQ(built.world.shapeCount(), 211u);
+  EXPECT_EQ(built.world.settings().substeps, 4);
+  EXPECT_FLOAT_EQ(built.world.settings().gravity.y, -10.0f);
+  EXPECT_FLOAT_EQ(built.world.mass(built.bodies[1]), 1.0f); // 1 m^2 at 1 kg/m^2
+  step(built, 60);
+  const std::vector<Transform2f> xf = bench::bodyTransforms(built);
+  ASSERT_TRUE(bench::allFinite(xf));
+  EXPECT_LT(bench::topSink(scene, xf), 0.05f);
+  EXPECT_LT(bench::largestOverlap(scene, xf), 0.02f);
+  EXPECT_GT(built.world.contactCount(), 200u);
+}
+
+TEST(ManyPyramids, is_ten_pyramids_of_base_twenty_side_by_side) {
+  const bench::Rigid2dScene scene = bench::manyPyramidsScene();
+  EXPECT_EQ(scene.name, "many_pyramids");
+  EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 10u * 210u);
+  EXPECT_EQ(countOf(scene, BodyType::staticBody), 1u);
+  ASSERT_EQ(scene.tops.size(), 10u);
+  std::vector<Transform2f> start;
+  for (const bench::SceneBody& b : scene.bodies) {
+    start.push_back({b.position, impetus::Rot2f::identity()});
+  }
+  EXPECT_LT(bench::largestOverlap(scene, start), 1.0e-5f);
+  // Every box stands on the ground: the ground's top is y = 0 and it is wider than the row.
+  const bench::SceneShape& ground = scene.shapes[0];
+  for (const bench::SceneBody& b : scene.bodies) {
+    if (b.type == BodyType::dynamicBody) {
+      EXPECT_LT(std::abs(b.position.x), ground.halfWidth);
+    }
+  }
+}
+
+TEST(ManyPyramids, built_in_impetus_stay_finite_and_standing) {
+  const bench::Rigid2dScene scene = bench::manyPyramidsScene(3, 10);
+  bench::ImpetusScene built = bench::buildImpetusScene(scene);
+  EXPECT_EQ(built.world.bodyCount(), 1u + 3u * 55u);
+  step(built, 60);
+  const std::vector<Transform2f> xf = bench::bodyTransforms(built);
+  ASSERT_TRUE(bench::allFinite(xf));
+  EXPECT_LT(bench::topSink(scene, xf), 0.05f);
+}
+
+TEST(Rain, has_the_requested_circles_in_an_open_box_as_wide_as_the_columns) {
+  for (const std::size_t count : {1u, 10u, 1000u, 10000u, 100000u}) {
+    const bench::Rigid2dScene scene = bench::rainScene(count);
+    EXPECT_EQ(countOf(scene, BodyType::dynamicBody), count);
+    EXPECT_EQ(countOf(scene, BodyType::staticBody), 1u);
+    EXPECT_EQ(scene.shapes.size(), count + 3u); // floor, two walls
+    EXPECT_TRUE(scene.tops.empty());
+    const float wallInner = scene.shapes[2].center.x - scene.shapes[2].halfWidth;
+    for (std::size_t i = 3; i < scene.shapes.size(); ++i) {
+      const bench::SceneShape& s = scene.shapes[i];
+      EXPECT_EQ(s.kind, bench::SceneShape::Kind::circle);
+      EXPECT_FLOAT_EQ(s.radius, bench::rainRadius);
+      const Vec2f p = scene.bodies[s.body].position;
+      EXPECT_LT(std::abs(p.x) + bench::rainRadius, wallInner);
+      EXPECT_GE(p.y, 1.0f);
+    }
+  }
+  EXPECT_EQ(bench::rainScene(1000).name, "rain_1k");
+  EXPECT_EQ(bench::rainScene(100000).name, "rain_100k");
+  // The box grows with the count, so the pile is equally deep: 10 times the circles, about 10
+  // times the width.
+  const float w1 = bench::rainScene(1000).shapes[0].halfWidth;
+  const float w10 = bench::rainScene(10000).shapes[0].halfWidth;
+  EXPECT_NEAR(w10 / w1, 10.0f, 0.5f);
+}
+
+TEST(Rain, circles_land_and_stay_in_the_box) {
+  const bench::Rigid2dScene scene = bench::rainScene(500);
+  std::vector<Transform2f> start;
+  for (const bench::SceneBody& b : scene.bodies) {
+    start.push_back({b.position, impetus::Rot2f::identity()});
+  }
+  EXPECT_FLOAT_EQ(bench::largestOverlap(scene, start), 0.0f);
+  bench::ImpetusScene built = bench::buildImpetusScene(scene);
+  step(built, 150); // 2.5 s: the top row (7.75 m up) has landed
+  const std::vector<Transform2f> xf = bench::bodyTransforms(built);
+  ASSERT_TRUE(bench::allFinite(xf));
+  const float wallInner = scene.shapes[2].center.x - scene.shapes[2].halfWidth;
+  float highest = 0.0f;
+  for (std::size_t i = 1; i < xf.size(); ++i) {
+    EXPECT_GT(xf[i].p.y, bench::rainRadius - 0.02f);
+    EXPECT_LT(std::abs(xf[i].p.x), wallInner);
+    highest = std::max(highest, xf[i].p.y);
+  }
+  EXPECT_LT(highest, 6.0f); // a pile of about 8 layers (0.43 m each), not the initial 7.75 m
+  EXPECT_LT(bench::largestOverlap(scene, xf), 0.05f);
+}
+
+TEST(Tumbler, is_a_turning_kinematic_drum_holding_a_grid_of_small_boxes) {
+  const bench::Rigid2dScene scene = bench::tumblerScene();
+  EXPECT_EQ(countOf(scene, BodyType::kinematicBody), 1u);
+  EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 45u * 45u);
+  EXPECT_EQ(scene.shapes.size(), 4u + 45u * 45u);
+  EXPECT_GT(scene.bodies[0].angularVelocity, 0.4f);
+  std::vector<Transform2f> start;
+  for (const bench::SceneBody& b : scene.bodies) {
+    start.push_back({b.position, impetus::Rot2f::identity()});
+  }
+  EXPECT_FLOAT_EQ(bench::largestOverlap(scene, start), 0.0f);
+
+  const bench::Rigid2dScene small = bench::tumblerScene(10);
+  bench::ImpetusScene built = bench::buildImpetusScene(small);
+  step(built, 120);
+  const std::vector<Transform2f> xf = bench::bodyTransforms(built);
+  ASSERT_TRUE(bench::allFinite(xf));
+  // The drum turned at its speed for 2 s; every box is still inside it (distance from its
+  // centre < the half-diagonal of the inner square).
+  EXPECT_NEAR(built.world.angle(built.bodies[0]), 2.0f * bench::tumblerSpeed, 1.0e-3f);
+  const Vec2f center{0.0f, 10.0f};
+  for (std::size_t i = 1; i < xf.size(); ++i) {
+    EXPECT_LT(impetus::length(xf[i].p - center), 9.5f * std::sqrt(2.0f));
+  }
+}
+
+TEST(Scenes, are_found_by_name_and_an_unknown_name_is_an_error) {
+  for (const std::string& name : bench::rigid2dSceneNames()) {
+    EXPECT_EQ(bench::makeRigid2dScene(name).name, name);
+  }
+  EXPECT_THROW((void)bench::makeRigid2dScene("pyramid"), impetus::Error);
+}
+
+TEST(Quality, overlap_and_sink_measure_what_they_say) {
+  const bench::Rigid2dScene scene = bench::largePyramidScene(2); // ground, two boxes, one on top
+  ASSERT_EQ(scene.bodies.size(), 4u);
+  std::vector<Transform2f> xf;
+  for (const bench::SceneBody& b : scene.bodies) {
+    xf.push_back({b.position, impetus::Rot2f::identity()});
+  }
+  xf[3].p.y -= 0.03f; // the top box sinks 3 cm into the two below
+  EXPECT_NEAR(bench::topSink(scene, xf), 0.03f, 1.0e-6f);
+  EXPECT_NEAR(bench::largestOverlap(scene, xf), 0.03f, 1.0e-5f);
+  xf[1].p.y -= 0.1f; // a base box 10 cm into the ground
+  EXPECT_NEAR(bench::largestOverlap(scene, xf), 0.1f, 1.0e-5f);
+  xf[1].p.x = std::nanf("");
+  EXPECT_FALSE(bench::allFinite(xf));
+}
+
+} // namespace
