@@ -187,8 +187,6 @@ CompositeBody parseComposite(const std::string& jsonText) {
   return body;
 }
 
-CompositeBody loadComposite(const std::string& path) {
-  return parseComposite(json_fields::readFile(path));
-}
+CompositeBody loadComposite(const std::string& path) { return parseComposite(json_fields::readFile(path)); }
 
 } // namespace impetus::cli

@@ -570,8 +570,6 @@ ParticleScene parseScene(const std::string& jsonText) {
   return scene;
 }
 
-ParticleScene loadScene(const std::string& path) {
-  return parseScene(json_fields::readFile(path));
-}
+ParticleScene loadScene(const std::string& path) { return parseScene(json_fields::readFile(path)); }
 
 } // namespace impetus::cli
