@@ -93,36 +93,24 @@ void updateMass(WorldState& w, Body& b) {
 }
 
 Manifold collide(const Shape& a, const Transform2f& xfA, const Shape& b, const Transform2f& xfB) {
-  const auto polygonOf = [](const Shape& s) -> std::optional<Polygon> {
-    if (const auto* p = std::get_if<Polygon>(&s.geometry)) {
-      return *p;
-    }
-    if (const auto* c = std::get_if<Capsule>(&s.geometry)) {
-      return asPolygon(*c);
-    }
-    if (const auto* g = std::get_if<Segment>(&s.geometry)) {
-      return asPolygon(*g);
-    }
-    return std::nullopt;
-  };
   const Circle* ca = std::get_if<Circle>(&a.geometry);
   const Circle* cb = std::get_if<Circle>(&b.geometry);
   if (ca != nullptr && cb != nullptr) {
     return collideCircles(*ca, xfA, *cb, xfB);
   }
   if (cb != nullptr) {
-    return collidePolygonAndCircle(*polygonOf(a), xfA, *cb, xfB);
+    return collidePolygonAndCircle(a.collisionPolygon, xfA, *cb, xfB);
   }
   if (ca != nullptr) {
     // Circle first: collide the other way round and turn the result around.
-    Manifold m = collidePolygonAndCircle(*polygonOf(b), xfB, *ca, xfA);
+    Manifold m = collidePolygonAndCircle(b.collisionPolygon, xfB, *ca, xfA);
     m.normal = -m.normal;
     for (int i = 0; i < m.pointCount; ++i) {
       std::swap(m.points[static_cast<std::size_t>(i)].anchorA, m.points[static_cast<std::size_t>(i)].anchorB);
     }
     return m;
   }
-  return collidePolygons(*polygonOf(a), xfA, *polygonOf(b), xfB);
+  return collidePolygons(a.collisionPolygon, xfA, b.collisionPolygon, xfB);
 }
 
 /// Reports a contact that stops touching (or is destroyed while touching) to `events`.
@@ -341,6 +329,13 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
   Shape& s = w.shapes[id.index];
   s = Shape{};
   s.geometry = geometry;
+  if (const auto* polygon = std::get_if<Polygon>(&geometry)) {
+    s.collisionPolygon = *polygon;
+  } else if (const auto* capsule = std::get_if<Capsule>(&geometry)) {
+    s.collisionPolygon = asPolygon(*capsule);
+  } else if (const auto* segment = std::get_if<Segment>(&geometry)) {
+    s.collisionPolygon = asPolygon(*segment);
+  }
   s.body = bodyId.index;
   s.density = def.density;
   s.friction = def.friction;

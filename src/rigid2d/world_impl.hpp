@@ -17,6 +17,9 @@ using Geometry = std::variant<Circle, Capsule, Polygon, Segment>;
 
 struct Shape {
   Geometry geometry;
+  /// The narrowphase's view of a capsule, segment or polygon (circles have none): made once
+  /// when the shape is created, so collision never converts or copies it in the step.
+  Polygon collisionPolygon;
   std::uint32_t body = 0; ///< body slot
   float density = 1.0f;
   float friction = 0.6f;

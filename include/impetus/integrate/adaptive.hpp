@@ -168,6 +168,16 @@ double initialStep(Derivative& f, double t0, const State& y0, const State& f0, d
   return std::clamp(std::min(100.0 * h0, h1), s.minStep, s.maxStep);
 }
 
+/// Checks the settings, the time span and the initial state of an adaptive run, and starts its
+/// result at (t0, y0) with the first step to try.
+template <typename State, typename Norm>
+AdaptiveResult<State> startAdaptive(const AdaptiveSettings& s, double t0, const State& y0, double t1, Norm& norm) {
+  validateAdaptive(s);
+  validateSpan(t0, t1);
+  requireFinite(norm(y0), "initialState");
+  return {y0, t0, s.initialStep, {}};
+}
+
 } // namespace detail
 
 // ---------------------------------------------------------------------------------------------
@@ -237,10 +247,7 @@ requires std::invocable<Derivative&, double, const State&>
                                                           const AdaptiveSettings& settings = {}, Norm norm = {},
                                                           Observer observe = {}) {
   const AdaptiveSettings& s = settings;
-  detail::validateAdaptive(s);
-  detail::validateSpan(t0, t1);
-  requireFinite(norm(y0), "initialState");
-  AdaptiveResult<State> r{y0, t0, s.initialStep, {}};
+  AdaptiveResult<State> r = detail::startAdaptive(s, t0, y0, t1, norm);
   auto counted = [&](double t, const State& y) -> State {
     ++r.stats.evaluations;
     return f(t, y);
@@ -326,10 +333,7 @@ requires std::invocable<Derivative&, double, const State&>
   constexpr double alpha = 0.2 - 0.75 * beta; // and of the current one (1/5 for a plain controller)
 
   const AdaptiveSettings& s = settings;
-  detail::validateAdaptive(s);
-  detail::validateSpan(t0, t1);
-  requireFinite(norm(y0), "initialState");
-  AdaptiveResult<State> r{y0, t0, s.initialStep, {}};
+  AdaptiveResult<State> r = detail::startAdaptive(s, t0, y0, t1, norm);
   auto counted = [&](double t, const State& y) -> State {
     ++r.stats.evaluations;
     return f(t, y);
