@@ -55,7 +55,7 @@ Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start,
   }
   const AABB swept = enlarge({min(start, end), max(start, end)}, core);
   float first = 1.0f;
-  w.tree.query(swept, [&](std::int32_t, std::uint64_t slot64) {
+  w.staticTree.query(swept, [&](std::int32_t, std::uint64_t slot64) {
     const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
     const Body& other = w.bodies[s.body];
     if (other.type != BodyType::staticBody || s.sensor) {

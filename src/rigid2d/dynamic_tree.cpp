@@ -1,7 +1,9 @@
 #include <impetus/error.hpp>
 #include <impetus/rigid2d/dynamic_tree.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace impetus::rigid2d {
 
@@ -65,39 +67,22 @@ void DynamicTree::enlargeProxy(std::int32_t proxy, const AABB& box) {
 }
 
 std::int32_t DynamicTree::findBestSibling(const AABB& box) const {
-  // Branch and bound over the tree: the cost of making node i the sibling is the perimeter of
-  // the new parent plus the growth of every ancestor (the "inherited" cost).
-  std::int32_t best = root_;
-  float bestCost = perimeter(merge(node(root_).box, box));
-  const float boxArea = perimeter(box);
-  struct Candidate {
-    std::int32_t index;
-    float inherited;
-  };
-  std::vector<Candidate> candidates;
-  candidates.push_back({root_, 0.0f});
-  while (!candidates.empty()) {
-    const Candidate c = candidates.back();
-    candidates.pop_back();
-    const Node& n = node(c.index);
-    const float directCost = perimeter(merge(n.box, box));
-    const float cost = directCost + c.inherited;
-    if (cost < bestCost) {
-      bestCost = cost;
-      best = c.index;
-    }
-    if (n.isLeaf()) {
-      continue;
-    }
-    // Below this node every candidate inherits at least this growth, and its own cost is at
-    // least the new box's perimeter: prune when that cannot beat the best.
-    const float inherited = c.inherited + directCost - perimeter(n.box);
-    if (boxArea + inherited < bestCost) {
-      candidates.push_back({n.child2, inherited});
-      candidates.push_back({n.child1, inherited});
-    }
+  // Greedy descent to a leaf with the surface area heuristic (perimeter in 2D), O(log n): at
+  // each internal node, go to the child where the new box adds the least perimeter (for a leaf
+  // child, the perimeter of the parent it would share with the new box; for an internal child,
+  // the growth of its box). Always ending at a leaf keeps the AVL rotations of insertLeaf able to
+  // restore balance (making a tall internal node the sibling could not be fixed by one rotation).
+  std::int32_t index = root_;
+  while (!node(index).isLeaf()) {
+    const Node& n = node(index);
+    const auto growth = [&](std::int32_t child) {
+      const Node& c = node(child);
+      const float merged = perimeter(merge(c.box, box));
+      return c.isLeaf() ? merged : merged - perimeter(c.box);
+    };
+    index = growth(n.child2) < growth(n.child1) ? n.child2 : n.child1;
   }
-  return best;
+  return index;
 }
 
 void DynamicTree::insertLeaf(std::int32_t leaf) {

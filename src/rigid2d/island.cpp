@@ -19,14 +19,12 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
 
 /// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).
 void wakeTouched(WorldState& w) {
-  for (const auto& [key, contact] : w.contacts) {
-    const Shape& sa = w.shapes[contact.shapeA];
-    const Shape& sb = w.shapes[contact.shapeB];
-    if (contact.manifold.pointCount == 0 || sa.sensor || sb.sensor) {
+  for (const Contact& contact : w.contacts) {
+    if (!contact.alive || contact.sensor || contact.manifold.pointCount == 0) {
       continue;
     }
-    Body& a = w.bodies[sa.body];
-    Body& b = w.bodies[sb.body];
+    Body& a = w.bodies[contact.bodyA];
+    Body& b = w.bodies[contact.bodyB];
     if (a.moving() && b.alive && b.type != BodyType::staticBody && !b.awake) {
       b.wake();
     } else if (b.moving() && a.alive && a.type != BodyType::staticBody && !a.awake) {
@@ -52,15 +50,13 @@ void updateSleep(WorldState& w, float dt) {
   for (std::uint32_t i = 0; i < parent.size(); ++i) {
     parent[i] = i;
   }
-  for (const auto& [key, contact] : w.contacts) {
-    const Shape& sa = w.shapes[contact.shapeA];
-    const Shape& sb = w.shapes[contact.shapeB];
-    if (contact.manifold.pointCount == 0 || sa.sensor || sb.sensor || !w.bodies[sa.body].moving() ||
-        !w.bodies[sb.body].moving()) {
+  for (const Contact& contact : w.contacts) {
+    if (!contact.alive || contact.sensor || contact.manifold.pointCount == 0 || !w.bodies[contact.bodyA].moving() ||
+        !w.bodies[contact.bodyB].moving()) {
       continue;
     }
-    const std::uint32_t ra = findRoot(parent, sa.body);
-    const std::uint32_t rb = findRoot(parent, sb.body);
+    const std::uint32_t ra = findRoot(parent, contact.bodyA);
+    const std::uint32_t rb = findRoot(parent, contact.bodyB);
     if (ra != rb) {
       parent[std::max(ra, rb)] = std::min(ra, rb); // deterministic: the lower slot is the root
     }

@@ -120,23 +120,68 @@ void reportEnd(const WorldState& w, const Contact& c, ContactEvents& events, Sen
   }
   const Shape& a = w.shapes[c.shapeA];
   const Shape& b = w.shapes[c.shapeB];
-  if (a.sensor || b.sensor) {
+  if (c.sensor) {
     sensors.ends.push_back(a.sensor ? SensorEvent{a.id, b.id} : SensorEvent{b.id, a.id});
   } else {
     events.ends.push_back({a.id, b.id});
   }
 }
 
+/// The radius a shape rolls on (circles and capsules roll; polygons do not), m.
+float rollingRadius(const Shape& s) {
+  if (const auto* circle = std::get_if<Circle>(&s.geometry)) {
+    return circle->radius;
+  }
+  if (const auto* capsule = std::get_if<Capsule>(&s.geometry)) {
+    return capsule->radius;
+  }
+  return 0.0f;
+}
+
+void createContact(WorldState& w, std::uint64_t key) {
+  std::uint32_t slot = 0;
+  if (!w.freeContacts.empty()) {
+    slot = w.freeContacts.back();
+    w.freeContacts.pop_back();
+  } else {
+    slot = static_cast<std::uint32_t>(w.contacts.size());
+    w.contacts.emplace_back();
+  }
+  Contact& c = w.contacts[slot];
+  c = Contact{};
+  c.shapeA = static_cast<std::uint32_t>(key >> 32);
+  c.shapeB = static_cast<std::uint32_t>(key & 0xffffffffU);
+  const Shape& a = w.shapes[c.shapeA];
+  const Shape& b = w.shapes[c.shapeB];
+  c.bodyA = a.body;
+  c.bodyB = b.body;
+  c.friction = std::sqrt(a.friction * b.friction);
+  c.restitution = std::max(a.restitution, b.restitution);
+  // Torque per unit normal force: the pair's coefficient times the radius that rolls.
+  c.rollingResistance =
+      std::max(a.rollingResistance, b.rollingResistance) * std::max(rollingRadius(a), rollingRadius(b));
+  c.sensor = a.sensor || b.sensor;
+  c.alive = true;
+  w.contactByPair.emplace(key, slot);
+}
+
+void destroyContact(WorldState& w, std::uint32_t slot) {
+  Contact& c = w.contacts[slot];
+  w.contactByPair.erase(pairKey(c.shapeA, c.shapeB));
+  c.alive = false;
+  w.freeContacts.push_back(slot);
+}
+
 /// Finds new pairs for the shapes whose fat boxes were (re)inserted, and drops contacts whose
 /// fat boxes no longer overlap.
 void updatePairs(WorldState& w) {
-  std::vector<std::uint64_t> newPairs;
+  w.newPairs.clear();
   for (std::uint32_t slot : w.moveBuffer) {
     const Shape& s = w.shapes[slot];
     if (!s.alive) {
       continue;
     }
-    w.tree.query(s.fatBox, [&](std::int32_t, std::uint64_t other64) {
+    const auto visit = [&](std::int32_t, std::uint64_t other64) {
       const auto other = static_cast<std::uint32_t>(other64);
       const Shape& o = w.shapes[other];
       if (other == slot || o.body == s.body) {
@@ -151,66 +196,85 @@ void updatePairs(WorldState& w) {
       if (!shouldCollide(s.filter, o.filter)) {
         return true;
       }
-      newPairs.push_back(pairKey(slot, other));
+      w.newPairs.push_back(pairKey(slot, other));
       return true;
-    });
+    };
+    w.movingTree.query(s.fatBox, visit);
+    if (!s.inStaticTree) {
+      w.staticTree.query(s.fatBox, visit);
+    }
   }
   w.moveBuffer.clear();
-  std::sort(newPairs.begin(), newPairs.end()); // deterministic creation order
-  newPairs.erase(std::unique(newPairs.begin(), newPairs.end()), newPairs.end());
-  for (std::uint64_t key : newPairs) {
-    if (w.contacts.contains(key)) {
-      continue;
+  std::sort(w.newPairs.begin(), w.newPairs.end()); // deterministic creation order
+  w.newPairs.erase(std::unique(w.newPairs.begin(), w.newPairs.end()), w.newPairs.end());
+  for (std::uint64_t key : w.newPairs) {
+    if (!w.contactByPair.contains(key)) {
+      createContact(w, key);
     }
-    Contact c;
-    c.shapeA = static_cast<std::uint32_t>(key >> 32);
-    c.shapeB = static_cast<std::uint32_t>(key & 0xffffffffU);
-    const Shape& a = w.shapes[c.shapeA];
-    const Shape& b = w.shapes[c.shapeB];
-    c.friction = std::sqrt(a.friction * b.friction);
-    c.restitution = std::max(a.restitution, b.restitution);
-    w.contacts.emplace(key, c);
   }
-  std::erase_if(w.contacts, [&](const auto& item) {
-    const Contact& c = item.second;
-    const bool apart = !overlaps(w.shapes[c.shapeA].fatBox, w.shapes[c.shapeB].fatBox);
-    if (apart) {
+  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+    const Contact& c = w.contacts[slot];
+    if (c.alive && !overlaps(w.shapes[c.shapeA].fatBox, w.shapes[c.shapeB].fatBox)) {
       reportEnd(w, c, w.contactEvents, w.sensorEvents);
+      destroyContact(w, slot);
     }
-    return apart;
-  });
+  }
 }
 
+/// Recomputes the manifolds of contacts with a moving body (in parallel: each writes only its
+/// own contact), then reports begin and end events in slot order.
 void collideContacts(WorldState& w) {
-  for (auto& [key, contact] : w.contacts) {
-    const Shape& a = w.shapes[contact.shapeA];
-    const Shape& b = w.shapes[contact.shapeB];
-    if (!w.bodies[a.body].moving() && !w.bodies[b.body].moving()) {
-      continue; // nothing moved: the manifold stands
-    }
-    const Manifold old = contact.manifold;
-    contact.manifold = collide(a, w.bodies[a.body].transform, b, w.bodies[b.body].transform);
-    const bool touching = contact.manifold.pointCount > 0;
-    const bool wasTouching = old.pointCount > 0;
-    if (touching != wasTouching) {
-      if (!touching) {
-        reportEnd(w, Contact{contact.shapeA, contact.shapeB, old}, w.contactEvents, w.sensorEvents);
-      } else if (a.sensor || b.sensor) {
-        w.sensorEvents.begins.push_back(a.sensor ? SensorEvent{a.id, b.id} : SensorEvent{b.id, a.id});
-      } else {
-        w.contactEvents.begins.push_back({a.id, b.id});
+  w.touchChanges.assign(w.contacts.size(), 0);
+  w.parallelFor(static_cast<std::uint32_t>(w.contacts.size()), 64, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t slot = begin; slot < end; ++slot) {
+      Contact& contact = w.contacts[slot];
+      if (!contact.alive) {
+        continue;
       }
-    }
-    // Warm starting: a point with the same features as last step keeps its impulses.
-    for (int i = 0; i < contact.manifold.pointCount; ++i) {
-      ManifoldPoint& p = contact.manifold.points[static_cast<std::size_t>(i)];
-      for (int j = 0; j < old.pointCount; ++j) {
-        const ManifoldPoint& q = old.points[static_cast<std::size_t>(j)];
-        if (q.id == p.id) {
-          p.normalImpulse = q.normalImpulse;
-          p.tangentImpulse = q.tangentImpulse;
+      const Body& bodyA = w.bodies[contact.bodyA];
+      const Body& bodyB = w.bodies[contact.bodyB];
+      if (!bodyA.moving() && !bodyB.moving()) {
+        continue; // nothing moved: the manifold stands
+      }
+      const Manifold old = contact.manifold;
+      contact.manifold = collide(w.shapes[contact.shapeA], bodyA.transform, w.shapes[contact.shapeB], bodyB.transform);
+      const bool touching = contact.manifold.pointCount > 0;
+      const bool wasTouching = old.pointCount > 0;
+      if (touching != wasTouching) {
+        // Remember the old manifold's point count: the end event needs to know it touched.
+        w.touchChanges[slot] = touching ? 1 : 2;
+      }
+      // Warm starting: a point with the same features as last step keeps its impulses.
+      for (int i = 0; i < contact.manifold.pointCount; ++i) {
+        ManifoldPoint& p = contact.manifold.points[static_cast<std::size_t>(i)];
+        for (int j = 0; j < old.pointCount; ++j) {
+          const ManifoldPoint& q = old.points[static_cast<std::size_t>(j)];
+          if (q.id == p.id) {
+            p.normalImpulse = q.normalImpulse;
+            p.tangentImpulse = q.tangentImpulse;
+          }
         }
       }
+      if (!touching) {
+        contact.rollingImpulse = 0.0f;
+      }
+    }
+  });
+  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+    const std::uint8_t change = w.touchChanges[slot];
+    if (change == 0) {
+      continue;
+    }
+    const Contact& c = w.contacts[slot];
+    const Shape& a = w.shapes[c.shapeA];
+    const Shape& b = w.shapes[c.shapeB];
+    if (c.sensor) {
+      const SensorEvent e = a.sensor ? SensorEvent{a.id, b.id} : SensorEvent{b.id, a.id};
+      (change == 1 ? w.sensorEvents.begins : w.sensorEvents.ends).push_back(e);
+    } else if (change == 1) {
+      w.contactEvents.begins.push_back({a.id, b.id});
+    } else {
+      w.contactEvents.ends.push_back({a.id, b.id});
     }
   }
 }
@@ -220,8 +284,8 @@ void synchronizeShapes(WorldState& w, Body& b) {
     Shape& s = w.shapes[slot];
     const AABB box = shapeBox(s, b.transform);
     if (!contains(s.fatBox, box)) {
-      s.fatBox = enlarge(box, aabbMargin);
-      w.tree.moveProxy(s.proxy, s.fatBox);
+      s.fatBox = enlarge(box, b.type == BodyType::staticBody ? 0.0f : aabbMargin);
+      w.treeOf(s).moveProxy(s.proxy, s.fatBox);
       w.moveBuffer.push_back(slot);
     }
   }
@@ -282,18 +346,19 @@ BodyId World::createBody(const BodyDef& def) {
 void World::destroyBody(BodyId id) {
   Impl& w = *impl_;
   Body& b = w.body(id);
+  const std::uint32_t bodySlot = id.index;
+  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+    const Contact& c = w.contacts[slot];
+    if (!c.alive || (c.bodyA != bodySlot && c.bodyB != bodySlot)) {
+      continue;
+    }
+    reportEnd(w, c, w.pendingEvents, w.pendingSensorEvents);
+    w.bodies[c.bodyA == bodySlot ? c.bodyB : c.bodyA].wake(); // what rested on it must fall
+    destroyContact(w, slot);
+  }
   for (std::uint32_t slot : b.shapes) {
     Shape& s = w.shapes[slot];
-    std::erase_if(w.contacts, [&](const auto& item) {
-      const bool attached = item.second.shapeA == slot || item.second.shapeB == slot;
-      if (attached) {
-        reportEnd(w, item.second, w.pendingEvents, w.pendingSensorEvents);
-        const std::uint32_t otherShape = item.second.shapeA == slot ? item.second.shapeB : item.second.shapeA;
-        w.bodies[w.shapes[otherShape].body].wake(); // what rested on it must fall
-      }
-      return attached;
-    });
-    w.tree.destroyProxy(s.proxy);
+    w.treeOf(s).destroyProxy(s.proxy);
     w.shapeIds.freeId(s.id);
     s = Shape{};
   }
@@ -305,8 +370,9 @@ bool World::isValid(BodyId id) const noexcept { return impl_->bodyIds.isValidId(
 std::size_t World::bodyCount() const noexcept { return impl_->bodyIds.size(); }
 std::size_t World::shapeCount() const noexcept { return impl_->shapeIds.size(); }
 std::size_t World::contactCount() const noexcept {
-  return static_cast<std::size_t>(std::count_if(impl_->contacts.begin(), impl_->contacts.end(),
-                                                [](const auto& item) { return item.second.manifold.pointCount > 0; }));
+  return static_cast<std::size_t>(std::count_if(impl_->contacts.begin(), impl_->contacts.end(), [](const Contact& c) {
+    return c.alive && !c.sensor && c.manifold.pointCount > 0;
+  }));
 }
 
 namespace {
@@ -315,6 +381,7 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
   Body& b = w.body(bodyId);
   requireNonNegative(def.density, "density");
   requireNonNegative(def.friction, "friction");
+  requireNonNegative(def.rollingResistance, "rollingResistance");
   if (!(def.restitution >= 0.0f && def.restitution <= 1.0f)) {
     throwInvalid("restitution", def.restitution, "must be in [0, 1]");
   }
@@ -339,14 +406,16 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
   s.body = bodyId.index;
   s.density = def.density;
   s.friction = def.friction;
+  s.rollingResistance = def.rollingResistance;
   s.restitution = def.restitution;
   s.filter = def.filter;
   s.sensor = def.isSensor;
   s.userData = def.userData;
   s.id = id;
   s.alive = true;
-  s.fatBox = enlarge(shapeBox(s, b.transform), b.type == BodyType::staticBody ? 0.0f : aabbMargin);
-  s.proxy = w.tree.createProxy(s.fatBox, id.index);
+  s.inStaticTree = b.type == BodyType::staticBody;
+  s.fatBox = enlarge(shapeBox(s, b.transform), s.inStaticTree ? 0.0f : aabbMargin);
+  s.proxy = w.treeOf(s).createProxy(s.fatBox, id.index);
   w.moveBuffer.push_back(id.index);
   b.shapes.push_back(id.index);
   updateMass(w, b);
@@ -448,27 +517,24 @@ void World::step(float dt) {
   updatePairs(w);
   collideContacts(w);
   detail::wakeTouched(w);
-  // Solver state per body slot: velocities in, position deltas out.
-  w.states.assign(w.bodies.size(), detail::BodyState{});
-  for (const Body& b : w.bodies) {
-    if (b.moving()) {
-      w.states[b.id.index] = {b.linearVelocity, b.angularVelocity, {}, Rot2f::identity()};
-    }
+  if (w.def.solver == SolverKind::bookImpulse) {
+    detail::solveBookImpulse(w, dt);
+  } else {
+    detail::solve(w, dt);
   }
-  detail::solveContacts(w, dt);
-  for (const auto& [key, contact] : w.contacts) {
-    if (contact.manifold.pointCount > 0 && contact.approachSpeed >= w.def.hitEventThreshold) {
+  for (const Contact& contact : w.contacts) {
+    if (contact.alive && !contact.sensor && contact.manifold.pointCount > 0 &&
+        contact.approachSpeed >= w.def.hitEventThreshold &&
+        (w.bodies[contact.bodyA].moving() || w.bodies[contact.bodyB].moving())) {
       const ManifoldPoint& p = contact.manifold.points[static_cast<std::size_t>(contact.fastestPoint)];
       w.contactEvents.hits.push_back({w.shapes[contact.shapeA].id, w.shapes[contact.shapeB].id, p.point,
                                       contact.manifold.normal, contact.approachSpeed});
     }
   }
   // Finalize: apply the deltas, clear forces, refresh the broadphase.
-  for (Body& b : w.bodies) {
-    if (!b.moving()) {
-      continue;
-    }
-    const detail::BodyState& s = w.states[b.id.index];
+  for (std::uint32_t i = 0; i < w.awakeBodies.size(); ++i) {
+    Body& b = w.bodies[w.awakeBodies[i]];
+    const detail::BodyState& s = w.states[i];
     b.linearVelocity = s.v;
     b.angularVelocity = s.w;
     const Vec2f start = b.center;

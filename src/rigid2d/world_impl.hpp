@@ -1,13 +1,16 @@
 // Internal state of the 2D world, shared by world.cpp (bookkeeping, broadphase, collide,
-// finalize) and contact_solver.cpp (the soft-step solve).
+// finalize), solver.cpp (the soft step), contact_solver.cpp (the contact constraints),
+// island.cpp (sleeping), continuous.cpp and world_queries.cpp.
 #pragma once
 
 #include <impetus/core/id_pool.hpp>
+#include <impetus/core/task_runner.hpp>
 #include <impetus/rigid2d/dynamic_tree.hpp>
 #include <impetus/rigid2d/manifold.hpp>
 #include <impetus/rigid2d/world.hpp>
 
-#include <map>
+#include <memory>
+#include <unordered_map>
 #include <variant>
 #include <vector>
 
@@ -24,10 +27,14 @@ struct Shape {
   float density = 1.0f;
   float friction = 0.6f;
   float restitution = 0.0f;
+  /// Rolling resistance torque per unit normal force, m: the coefficient times the radius the
+  /// shape rolls on (0 for shapes that do not roll).
+  float rollingResistance = 0.0f;
   Filter filter;
   bool sensor = false;
   std::uint64_t userData = 0;
   std::int32_t proxy = DynamicTree::nullNode;
+  bool inStaticTree = false; ///< which broadphase tree holds the proxy
   AABB fatBox;
   ShapeId id;
   bool alive = false;
@@ -46,9 +53,11 @@ struct Body {
   float inertia = 0.0f, inverseInertia = 0.0f;
   float linearDamping = 0.0f, angularDamping = 0.0f, gravityScale = 1.0f;
   bool fixedRotation = false;
+  bool bullet = false;
   bool enableSleep = true;
   bool awake = true;
   float sleepTime = 0.0f;            ///< s spent slower than the sleep tolerances
+  std::uint32_t solverIndex = 0;     ///< this step's index into the solver arrays (moving bodies)
   std::vector<std::uint32_t> shapes; ///< shape slots
   std::uint64_t userData = 0;
   BodyId id;
@@ -62,36 +71,80 @@ struct Body {
   }
 };
 
+/// A pair of shapes whose fat boxes overlap: touching when its manifold has points.
 struct Contact {
   std::uint32_t shapeA = 0; ///< the lower shape slot
   std::uint32_t shapeB = 0;
+  std::uint32_t bodyA = 0; ///< body slots
+  std::uint32_t bodyB = 0;
   Manifold manifold;
   float friction = 0.0f;
   float restitution = 0.0f;
-  float approachSpeed = 0.0f; ///< the solver's fastest impact this step, m/s (for hit events)
+  float rollingResistance = 0.0f; ///< m (torque per unit normal force)
+  float rollingImpulse = 0.0f;    ///< solver state, N m s (warm start)
+  float approachSpeed = 0.0f;     ///< the solver's fastest impact this step, m/s (for hit events)
   int fastestPoint = 0;
+  bool sensor = false; ///< either shape is a sensor: events only, no response
+  bool alive = false;
 };
 
 /// The solver's per-body state for one step: velocities and the position and rotation deltas
 /// accumulated over the substeps (anchors stay fixed in the bodies, so separations follow from
-/// the deltas without recomputing the manifolds).
-struct BodyState {
+/// the deltas without recomputing the manifolds). Eight floats: the wide solver loads a body
+/// as two rows of four.
+struct alignas(16) BodyState {
   Vec2f v;
   float w = 0.0f;
+  float unused = 0.0f;
   Vec2f dp;
   Rot2f dq = Rot2f::identity();
 };
+static_assert(sizeof(BodyState) == 8 * sizeof(float));
+
+/// What integrating a moving body needs, packed for the solver: accelerations from gravity and
+/// the applied force and torque, and damping.
+struct BodySim {
+  Vec2f acceleration;            ///< m/s^2
+  float angularAcceleration = 0; ///< rad/s^2
+  float linearDamping = 0;       ///< 1/s
+  float angularDamping = 0;      ///< 1/s
+  bool dynamic = false;          ///< kinematic bodies keep their velocity
+};
+
+struct ContactSolverData; // contact_solver.cpp
 
 struct WorldState {
+  WorldState();
+  ~WorldState();
+  WorldState(WorldState&&) noexcept;
+  WorldState& operator=(WorldState&&) noexcept;
+
   WorldDef def;
   IdPool bodyIds;
   std::vector<Body> bodies; ///< by id slot
   IdPool shapeIds;
   std::vector<Shape> shapes; ///< by id slot
-  DynamicTree tree;
-  std::vector<std::uint32_t> moveBuffer;     ///< shapes whose fat box was (re)inserted
-  std::map<std::uint64_t, Contact> contacts; ///< by (shapeA << 32 | shapeB): a fixed order
-  std::vector<BodyState> states;             ///< by body slot, rebuilt each step
+  /// Broadphase: static shapes apart from moving ones, so a static world is never re-queried
+  /// against itself and continuous collision searches static shapes only.
+  DynamicTree staticTree;
+  DynamicTree movingTree;
+  std::vector<std::uint32_t> moveBuffer; ///< shapes whose fat box was (re)inserted
+  std::vector<std::uint64_t> newPairs;   ///< scratch for the pair update
+
+  /// Contacts in a pool (slots reused last-in first-out, so the order is deterministic), found
+  /// by their shape pair.
+  std::vector<Contact> contacts;
+  std::vector<std::uint32_t> freeContacts;
+  std::unordered_map<std::uint64_t, std::uint32_t> contactByPair; ///< (shapeA << 32 | shapeB) -> slot
+  std::vector<std::uint8_t> touchChanges; ///< scratch of the collide pass: 1 began, 2 ended touching
+
+  /// This step's moving bodies in solver order, their solver state (plus one last, never
+  /// written state standing for every static body) and integration data.
+  std::vector<std::uint32_t> awakeBodies;
+  std::vector<BodyState> states;
+  std::vector<BodySim> sims;
+  std::unique_ptr<ContactSolverData> contactSolver;
+
   ContactEvents contactEvents;
   SensorEvents sensorEvents;
   ContactEvents pendingEvents; ///< raised between steps (destroyed bodies): reported by the next step
@@ -99,14 +152,47 @@ struct WorldState {
 
   Body& body(BodyId id);
   [[nodiscard]] const Body& body(BodyId id) const;
+  [[nodiscard]] DynamicTree& treeOf(const Shape& s) { return s.inStaticTree ? staticTree : movingTree; }
+  /// The solver index standing for static bodies (a state that stays at rest).
+  [[nodiscard]] std::uint32_t staticIndex() const noexcept { return static_cast<std::uint32_t>(awakeBodies.size()); }
+  /// Runs task over [0, count) in ranges of at least minRange, on the task runner if any.
+  void parallelFor(std::uint32_t count, std::uint32_t minRange, const TaskRunner::RangeTask& task) const;
+};
+
+/// The constants of one step's solve.
+struct StepContext {
+  float dt = 0.0f;
+  float h = 0.0f;        ///< substep, s
+  float inverseH = 0.0f; ///< 1/s
+  int substeps = 1;
 };
 
 /// A shape's world bounding box.
 [[nodiscard]] AABB shapeBox(const Shape& s, const Transform2f& xf);
 
-// contact_solver.cpp
-/// The substepped soft contact solve over every touching contact; updates `states`.
-void solveContacts(WorldState& w, float dt);
+// solver.cpp
+/// The substepped soft-step solve of every moving body and touching contact: builds `states`
+/// from the awake bodies and leaves the step's velocities and position deltas in them.
+void solve(WorldState& w, float dt);
+/// Gives every moving body a solver index and loads `states` and `sims` from the bodies.
+void buildSolverBodies(WorldState& w);
+/// Semi-implicit Euler over one (sub)step of context.h: velocities from accelerations and
+/// damping, then position deltas from the new velocities.
+void integrateVelocities(WorldState& w, const StepContext& context);
+void integratePositions(WorldState& w, const StepContext& context);
+
+// book_impulse.cpp
+/// The book's collision response (ch. 9-10, errata fixed): one step of semi-implicit Euler and
+/// one impulse per touching contact.
+void solveBookImpulse(WorldState& w, float dt);
+
+// contact_solver.cpp: the contact constraints, coloured so that each colour's constraints share
+// no moving body and are solved four at a time (and on several threads).
+void prepareContacts(WorldState& w, const StepContext& context);
+void warmStartContacts(WorldState& w);
+void solveContacts(WorldState& w, const StepContext& context, bool useBias);
+void applyRestitution(WorldState& w);
+void storeImpulses(WorldState& w);
 
 // island.cpp
 /// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).

@@ -16,7 +16,7 @@ std::optional<RayHit> World::castRayClosest(const Vec2f& origin, const Vec2f& tr
   requireFinite(translation, "translation");
   const Impl& w = *impl_;
   std::optional<RayHit> best;
-  w.tree.rayCast(origin, origin + translation, [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
+  const auto visit = [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
     const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
     const float maxFraction = best ? best->fraction : 1.0f;
     if (s.sensor) {
@@ -30,7 +30,9 @@ std::optional<RayHit> World::castRayClosest(const Vec2f& origin, const Vec2f& tr
     }
     best = RayHit{s.id, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction};
     return out.fraction;
-  });
+  };
+  w.staticTree.rayCast(origin, origin + translation, visit);
+  w.movingTree.rayCast(origin, origin + translation, visit);
   return best;
 }
 
@@ -39,7 +41,7 @@ std::vector<RayHit> World::castRayAll(const Vec2f& origin, const Vec2f& translat
   requireFinite(translation, "translation");
   const Impl& w = *impl_;
   std::vector<RayHit> hits;
-  w.tree.rayCast(origin, origin + translation, [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
+  const auto visit = [&](std::int32_t, std::uint64_t slot64, const Vec2f&, const Vec2f&) {
     const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
     if (s.sensor) {
       return 1.0f;
@@ -51,7 +53,9 @@ std::vector<RayHit> World::castRayAll(const Vec2f& origin, const Vec2f& translat
       hits.push_back({s.id, transformPoint(xf, out.point), rotate(xf.q, out.normal), out.fraction});
     }
     return 1.0f; // keep going: every hit
-  });
+  };
+  w.staticTree.rayCast(origin, origin + translation, visit);
+  w.movingTree.rayCast(origin, origin + translation, visit);
   std::sort(hits.begin(), hits.end(), [](const RayHit& a, const RayHit& b) {
     return a.fraction != b.fraction ? a.fraction < b.fraction : a.shape.index < b.shape.index;
   });
@@ -64,13 +68,15 @@ std::vector<ShapeId> World::queryAABB(const AABB& box) const {
   }
   const Impl& w = *impl_;
   std::vector<ShapeId> found;
-  w.tree.query(box, [&](std::int32_t, std::uint64_t slot64) {
+  const auto visit = [&](std::int32_t, std::uint64_t slot64) {
     const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
     if (overlaps(shapeBox(s, w.bodies[s.body].transform), box)) {
       found.push_back(s.id);
     }
     return true;
-  });
+  };
+  w.staticTree.query(box, visit);
+  w.movingTree.query(box, visit);
   std::sort(found.begin(), found.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
   return found;
 }
@@ -79,7 +85,7 @@ std::vector<ShapeId> World::queryPoint(const Vec2f& point) const {
   requireFinite(point, "point");
   const Impl& w = *impl_;
   std::vector<ShapeId> found;
-  w.tree.query(AABB{point, point}, [&](std::int32_t, std::uint64_t slot64) {
+  const auto visit = [&](std::int32_t, std::uint64_t slot64) {
     const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
     const Vec2f local = inverseTransformPoint(w.bodies[s.body].transform, point);
     const bool inside = std::visit(
@@ -95,7 +101,9 @@ std::vector<ShapeId> World::queryPoint(const Vec2f& point) const {
       found.push_back(s.id);
     }
     return true;
-  });
+  };
+  w.staticTree.query(AABB{point, point}, visit);
+  w.movingTree.query(AABB{point, point}, visit);
   std::sort(found.begin(), found.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
   return found;
 }

@@ -85,10 +85,10 @@ template <Real T> [[nodiscard]] constexpr Vec2<T> lerp(const Vec2<T>& a, const V
   return a + (b - a) * t;
 }
 template <Real T> [[nodiscard]] Vec2<T> min(const Vec2<T>& a, const Vec2<T>& b) noexcept {
-  return {std::fmin(a.x, b.x), std::fmin(a.y, b.y)};
+  return {b.x < a.x ? b.x : a.x, b.y < a.y ? b.y : a.y};
 }
 template <Real T> [[nodiscard]] Vec2<T> max(const Vec2<T>& a, const Vec2<T>& b) noexcept {
-  return {std::fmax(a.x, b.x), std::fmax(a.y, b.y)};
+  return {a.x < b.x ? b.x : a.x, a.y < b.y ? b.y : a.y};
 }
 template <Real T> [[nodiscard]] Vec2<T> abs(const Vec2<T>& v) noexcept { return {std::abs(v.x), std::abs(v.y)}; }
 template <Real T> [[nodiscard]] bool isFinite(const Vec2<T>& v) noexcept {

@@ -100,10 +100,10 @@ template <Real T> [[nodiscard]] constexpr Vec3<T> lerp(const Vec3<T>& a, const V
   return a + (b - a) * t;
 }
 template <Real T> [[nodiscard]] Vec3<T> min(const Vec3<T>& a, const Vec3<T>& b) noexcept {
-  return {std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmin(a.z, b.z)};
+  return {b.x < a.x ? b.x : a.x, b.y < a.y ? b.y : a.y, b.z < a.z ? b.z : a.z};
 }
 template <Real T> [[nodiscard]] Vec3<T> max(const Vec3<T>& a, const Vec3<T>& b) noexcept {
-  return {std::fmax(a.x, b.x), std::fmax(a.y, b.y), std::fmax(a.z, b.z)};
+  return {a.x < b.x ? b.x : a.x, a.y < b.y ? b.y : a.y, a.z < b.z ? b.z : a.z};
 }
 template <Real T> [[nodiscard]] Vec3<T> abs(const Vec3<T>& v) noexcept {
   return {std::abs(v.x), std::abs(v.y), std::abs(v.z)};

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <impetus/core/id_pool.hpp>
+#include <impetus/core/task_runner.hpp>
 #include <impetus/math/vec2.hpp>
 
 #include <cstdint>
@@ -45,15 +46,30 @@ struct ShapeDef {
   float density = 1.0f;     ///< kg/m^2
   float friction = 0.6f;    ///< Coulomb coefficient
   float restitution = 0.0f; ///< 0 to 1
+  /// Rolling resistance coefficient (dimensionless, as c_rr in F = c_rr N): a circle or capsule
+  /// rolling on this shape feels a torque c_rr N r against its rolling (r its radius). Typical:
+  /// 0.001 (steel on steel) to 0.3 (tyre on sand). The pair uses the larger of the two.
+  float rollingResistance = 0.0f;
   Filter filter;
   bool isSensor = false; ///< detects overlap, no collision response (events: not yet)
   std::uint64_t userData = 0;
 };
 
+/// How the world resolves contacts.
+enum class SolverKind {
+  /// The soft step (Box2D v3's): substeps, soft contacts, warm starting, relax, restitution,
+  /// friction. Stable stacks and piles. The default.
+  softStep,
+  /// The book's response (ch. 9-10, errata fixed): one semi-implicit Euler step and one impulse
+  /// per touching pair. For reproducing the book's programs; stacks do not rest well.
+  bookImpulse,
+};
+
 struct WorldDef {
   Vec2f gravity{0.0f, -10.0f}; ///< m/s^2
-  int substeps = 4;            ///< solver substeps per step
-  float contactHertz = 30.0f;  ///< contact stiffness, Hz (capped at a quarter of the substep rate)
+  SolverKind solver = SolverKind::softStep;
+  int substeps = 4;           ///< solver substeps per step (soft step)
+  float contactHertz = 30.0f; ///< contact stiffness, Hz (capped at a quarter of the substep rate)
   float contactDampingRatio = 10.0f;
   float maxContactPushSpeed = 3.0f;     ///< m/s: how fast overlap is resolved
   float restitutionThreshold = 1.0f;    ///< m/s: slower impacts do not bounce
@@ -63,6 +79,9 @@ struct WorldDef {
   float timeToSleep = 0.5f;             ///< s an island must stay slow to fall asleep
   float sleepLinearTolerance = 0.05f;   ///< m/s
   float sleepAngularTolerance = 0.035f; ///< rad/s (2 degrees per second)
+  /// Runs the step's parallel loops (not owned; must outlive the world). Null: everything on
+  /// the calling thread. Results are bit-identical with or without, at any thread count.
+  TaskRunner* taskRunner = nullptr;
 };
 
 } // namespace impetus::rigid2d

@@ -1,0 +1,52 @@
+// Parallel loops for the engines. A world given a TaskRunner splits the independent parts of its
+// step (integrating bodies, each colour of the constraint graph, narrowphase) into ranges and
+// hands them to the runner; without one it runs them in order on the caller's thread.
+//
+// Results never depend on the runner: the engine only passes loops whose ranges write disjoint
+// data and that read nothing another range writes, and it gathers anything ordered (events,
+// new contacts) serially afterwards. So a step is bit-identical with 1 thread or 16.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+namespace impetus {
+
+class TaskRunner {
+public:
+  /// Work on the indices [begin, end).
+  using RangeTask = std::function<void(std::uint32_t begin, std::uint32_t end)>;
+
+  TaskRunner() = default;
+  TaskRunner(const TaskRunner&) = delete;
+  TaskRunner& operator=(const TaskRunner&) = delete;
+  virtual ~TaskRunner() = default;
+
+  /// Calls `task` over disjoint ranges that together cover [0, count), each at least `minRange`
+  /// long (except possibly the last), possibly at the same time on several threads, and returns
+  /// when every range is done. `task` must not throw.
+  virtual void parallelFor(std::uint32_t count, std::uint32_t minRange, const RangeTask& task) = 0;
+
+  /// Threads that may run ranges at once (the caller's included).
+  [[nodiscard]] virtual int threadCount() const noexcept = 0;
+};
+
+/// A TaskRunner over a fixed pool of std::threads; the calling thread works too. Idle workers
+/// spin briefly for the next loop (a step runs hundreds of short loops) and then sleep.
+class ThreadPool final : public TaskRunner {
+public:
+  /// threadCount >= 1 threads in all, the caller's included (1: everything on the caller).
+  /// Throws impetus::Error naming `threadCount` otherwise.
+  explicit ThreadPool(int threadCount);
+  ~ThreadPool() override;
+
+  void parallelFor(std::uint32_t count, std::uint32_t minRange, const RangeTask& task) override;
+  [[nodiscard]] int threadCount() const noexcept override;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace impetus

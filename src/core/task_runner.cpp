@@ -1,0 +1,135 @@
+// A TaskRunner over std::threads: one loop at a time, its ranges claimed from an atomic counter.
+#include <impetus/core/task_runner.hpp>
+#include <impetus/error.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace impetus {
+
+struct ThreadPool::Impl {
+  int threadCount = 1;
+  std::vector<std::thread> workers;
+
+  // The loop being run: published by bumping `generation`.
+  const RangeTask* task = nullptr;
+  std::uint32_t count = 0;
+  std::uint32_t rangeSize = 1;
+  std::atomic<std::uint32_t> rangeCount{0}; ///< read before a claim proves the loop current
+  /// The loop's generation (high 32 bits) and its next unclaimed range (low 32 bits): a thread
+  /// that lags behind can never claim a range of a later loop with the task of an earlier one.
+  std::atomic<std::uint64_t> claim{0};
+  std::atomic<std::uint32_t> doneRanges{0};
+  std::atomic<std::uint64_t> generation{0};
+  std::atomic<bool> stopping{false};
+  std::mutex mutex;
+  std::condition_variable wakeUp;
+
+  /// Claims and runs ranges of loop `gen` until none is left. The loop's fields are read only
+  /// after a successful claim, which proves the loop is still running (the caller starts the
+  /// next loop only when every range of this one is done).
+  void work(std::uint64_t gen) {
+    for (;;) {
+      std::uint64_t current = claim.load(std::memory_order_acquire);
+      for (;;) {
+        if ((current >> 32) != (gen & 0xffffffffU) ||
+            (current & 0xffffffffU) >= rangeCount.load(std::memory_order_relaxed)) {
+          return;
+        }
+        if (claim.compare_exchange_weak(current, current + 1, std::memory_order_acq_rel)) {
+          break;
+        }
+      }
+      const auto r = static_cast<std::uint32_t>(current & 0xffffffffU);
+      const std::uint32_t begin = r * rangeSize;
+      (*task)(begin, std::min(count, begin + rangeSize));
+      doneRanges.fetch_add(1, std::memory_order_acq_rel);
+    }
+  }
+
+  void workerLoop() {
+    std::uint64_t seen = 0;
+    for (;;) {
+      // Spin a little for the next loop before sleeping: loops come every few microseconds
+      // while a world steps.
+      std::uint64_t g = generation.load(std::memory_order_acquire);
+      for (int spin = 0; g == seen && spin < 20000; ++spin) {
+        std::this_thread::yield();
+        g = generation.load(std::memory_order_acquire);
+      }
+      if (g == seen) {
+        std::unique_lock lock(mutex);
+        wakeUp.wait(lock, [&] {
+          return stopping.load(std::memory_order_acquire) || generation.load(std::memory_order_acquire) != seen;
+        });
+        g = generation.load(std::memory_order_acquire);
+      }
+      if (stopping.load(std::memory_order_acquire)) {
+        return;
+      }
+      seen = g;
+      work(g);
+    }
+  }
+};
+
+ThreadPool::ThreadPool(int threadCount) : impl_(std::make_unique<Impl>()) {
+  if (threadCount < 1 || threadCount > 256) {
+    throwInvalid("threadCount", threadCount, "must be between 1 and 256");
+  }
+  impl_->threadCount = threadCount;
+  for (int i = 1; i < threadCount; ++i) {
+    impl_->workers.emplace_back([this] { impl_->workerLoop(); });
+  }
+}
+
+ThreadPool::~ThreadPool() {
+  {
+    const std::lock_guard lock(impl_->mutex);
+    impl_->stopping.store(true, std::memory_order_release);
+  }
+  impl_->wakeUp.notify_all();
+  for (std::thread& t : impl_->workers) {
+    t.join();
+  }
+}
+
+int ThreadPool::threadCount() const noexcept { return impl_->threadCount; }
+
+void ThreadPool::parallelFor(std::uint32_t count, std::uint32_t minRange, const RangeTask& task) {
+  if (count == 0) {
+    return;
+  }
+  Impl& p = *impl_;
+  minRange = std::max<std::uint32_t>(minRange, 1);
+  const auto threads = static_cast<std::uint32_t>(p.threadCount);
+  if (threads == 1 || count <= minRange) {
+    task(0, count);
+    return;
+  }
+  // About four ranges per thread balances the load without much claiming.
+  const std::uint32_t target = std::max<std::uint32_t>(minRange, (count + 4 * threads - 1) / (4 * threads));
+  std::uint64_t gen = 0;
+  {
+    const std::lock_guard lock(p.mutex);
+    p.task = &task;
+    p.count = count;
+    p.rangeSize = target;
+    p.rangeCount.store((count + target - 1) / target, std::memory_order_relaxed);
+    p.doneRanges.store(0, std::memory_order_relaxed);
+    gen = p.generation.load(std::memory_order_relaxed) + 1;
+    p.claim.store((gen & 0xffffffffU) << 32, std::memory_order_release);
+    p.generation.store(gen, std::memory_order_release);
+  }
+  p.wakeUp.notify_all();
+  p.work(gen);
+  while (p.doneRanges.load(std::memory_order_acquire) < p.rangeCount.load(std::memory_order_relaxed)) {
+    std::this_thread::yield();
+  }
+}
+
+} // namespace impetus

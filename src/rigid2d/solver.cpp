@@ -1,0 +1,118 @@
+// The soft step (after Erin Catto's Solver2D and Box2D v3): the order of one step's solve.
+//
+// The awake bodies get compact solver indices; then, `substeps` times: integrate velocities
+// (gravity, applied forces, damping), warm start the contacts with their accumulated impulses,
+// solve them with bias (soft constraints that push overlap apart at a bounded speed), integrate
+// positions (as deltas), and relax (solve again without bias, taking back the velocity the bias
+// added). Restitution is applied once at the end, and the impulses are stored for the next step.
+#include "rigid2d/world_impl.hpp"
+
+#include <impetus/math/scalar.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace impetus::rigid2d::detail {
+
+void WorldState::parallelFor(std::uint32_t count, std::uint32_t minRange, const TaskRunner::RangeTask& task) const {
+  if (count == 0) {
+    return;
+  }
+  if (def.taskRunner != nullptr && count > minRange) {
+    def.taskRunner->parallelFor(count, minRange, task);
+  } else {
+    task(0, count);
+  }
+}
+
+namespace {
+
+/// The most a body may turn in one substep, rad: faster spin is clamped so the rotation
+/// deltas (and the anchors that follow them) stay meaningful.
+constexpr float maxRotationPerSubstep = 0.25f * pi<float>;
+
+} // namespace
+
+void buildSolverBodies(WorldState& w) {
+  w.awakeBodies.clear();
+  for (std::uint32_t slot = 0; slot < w.bodies.size(); ++slot) {
+    Body& b = w.bodies[slot];
+    if (b.moving()) {
+      b.solverIndex = static_cast<std::uint32_t>(w.awakeBodies.size());
+      w.awakeBodies.push_back(slot);
+    }
+  }
+  const auto n = static_cast<std::uint32_t>(w.awakeBodies.size());
+  w.states.resize(n + 1);
+  w.sims.resize(n);
+  w.states[n] = BodyState{}; // the static state: at rest, never written
+  const Vec2f gravity = w.def.gravity;
+  w.parallelFor(n, 256, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const Body& b = w.bodies[w.awakeBodies[i]];
+      w.states[i] = BodyState{b.linearVelocity, b.angularVelocity, 0.0f, {}, Rot2f::identity()};
+      BodySim& sim = w.sims[i];
+      sim.dynamic = b.type == BodyType::dynamicBody;
+      sim.acceleration = sim.dynamic ? gravity * b.gravityScale + b.force * b.inverseMass : Vec2f{};
+      sim.angularAcceleration = sim.dynamic ? b.inverseInertia * b.torque : 0.0f;
+      sim.linearDamping = b.linearDamping;
+      sim.angularDamping = b.angularDamping;
+    }
+  });
+}
+
+void integrateVelocities(WorldState& w, const StepContext& context) {
+  const float h = context.h;
+  const float maxSpeed = w.def.maxLinearSpeed;
+  const float maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
+  w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const BodySim& sim = w.sims[i];
+      if (!sim.dynamic) {
+        continue; // kinematic: moves at its set velocity
+      }
+      BodyState& s = w.states[i];
+      // Implicit damping: stable for any coefficient.
+      Vec2f v = (s.v + sim.acceleration * h) * (1.0f / (1.0f + h * sim.linearDamping));
+      float av = (s.w + sim.angularAcceleration * h) * (1.0f / (1.0f + h * sim.angularDamping));
+      if (lengthSquared(v) > maxSpeed * maxSpeed) {
+        v = normalize(v) * maxSpeed;
+      }
+      s.v = v;
+      s.w = std::clamp(av, -maxAngularSpeed, maxAngularSpeed);
+    }
+  });
+}
+
+void integratePositions(WorldState& w, const StepContext& context) {
+  const float h = context.h;
+  w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t i = begin; i < end; ++i) {
+      BodyState& s = w.states[i];
+      s.dp += s.v * h;
+      const float angle = s.w * h;
+      s.dq = normalize(Rot2f{s.dq.c - angle * s.dq.s, s.dq.s + angle * s.dq.c});
+    }
+  });
+}
+
+void solve(WorldState& w, float dt) {
+  StepContext context;
+  context.dt = dt;
+  context.substeps = w.def.substeps;
+  context.h = dt / static_cast<float>(context.substeps);
+  context.inverseH = 1.0f / context.h;
+  buildSolverBodies(w);
+  prepareContacts(w, context);
+  for (int substep = 0; substep < context.substeps; ++substep) {
+    integrateVelocities(w, context);
+    warmStartContacts(w);
+    solveContacts(w, context, true);
+    integratePositions(w, context);
+    solveContacts(w, context, false); // relax
+  }
+  applyRestitution(w);
+  storeImpulses(w);
+}
+
+} // namespace impetus::rigid2d::detail
