@@ -408,3 +408,62 @@ TEST(World2D, bad_input_is_an_error) {
 
 } // namespace
 } // namespace impetus::rigid2d
+
+namespace impetus::rigid2d {
+namespace {
+
+// Rolling resistance: a disc rolling without slip feels a torque c_rr N r against its rolling.
+// With m a = -f, I alpha = f r - c_rr N r and a = alpha r, a = -c_rr N r^2 / (I + m r^2), which
+// for a uniform disc (I = m r^2 / 2, N = m g) is -(2/3) c_rr g, independent of r and m.
+TEST(World2D, rolling_resistance_decelerates_a_rolling_disc_at_two_thirds_crr_g) {
+  WorldDef def;
+  def.enableSleep = false;
+  World world(def);
+  const BodyId ground = world.createBody({});
+  ShapeDef groundShape;
+  groundShape.rollingResistance = 0.05f;
+  world.createShape(ground, groundShape, makeOffsetBox(50.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+  const float radius = 0.3f;
+  BodyDef body;
+  body.type = BodyType::dynamicBody;
+  body.position = {-20.0f, radius};
+  body.linearVelocity = {3.0f, 0.0f};
+  body.angularVelocity = -3.0f / radius; // rolling already
+  const BodyId disc = world.createBody(body);
+  world.createShape(disc, {}, Circle{{}, radius});
+  for (int i = 0; i < 30; ++i) { // settle the contact
+    world.step(1.0f / 60.0f);
+  }
+  const float v0 = world.linearVelocity(disc).x;
+  const int steps = 120;
+  for (int i = 0; i < steps; ++i) {
+    world.step(1.0f / 60.0f);
+  }
+  const float deceleration = (v0 - world.linearVelocity(disc).x) / (static_cast<float>(steps) / 60.0f);
+  const float expected = 2.0f / 3.0f * 0.05f * 10.0f;
+  EXPECT_NEAR(deceleration, expected, 0.05f * expected);
+  // Still rolling, not skidding: v = -w r.
+  EXPECT_NEAR(world.linearVelocity(disc).x, -world.angularVelocity(disc) * radius, 0.01f);
+}
+
+// Without rolling resistance a rolling disc keeps its speed (the contact does no work).
+TEST(World2D, rolling_disc_without_resistance_keeps_its_speed) {
+  WorldDef def;
+  def.enableSleep = false;
+  World world(def);
+  addGround(world);
+  BodyDef body;
+  body.type = BodyType::dynamicBody;
+  body.position = {-20.0f, 0.3f};
+  body.linearVelocity = {3.0f, 0.0f};
+  body.angularVelocity = -10.0f;
+  const BodyId disc = world.createBody(body);
+  world.createShape(disc, {}, Circle{{}, 0.3f});
+  for (int i = 0; i < 180; ++i) {
+    world.step(1.0f / 60.0f);
+  }
+  EXPECT_NEAR(world.linearVelocity(disc).x, 3.0f, 0.01f);
+}
+
+} // namespace
+} // namespace impetus::rigid2d
