@@ -1,10 +1,11 @@
 // impetus-bench: the 2D rigid-body scenes of bench/rigid2d_scenes.hpp run side by side in Impetus
-// and in Box2D 2.4.1, single-threaded, with identical geometry at 1/60 s per step (Impetus: 4
-// substeps; Box2D: 8 velocity and 3 position iterations; neither sleeps, and Box2D's continuous
-// collision is off unless --box2d-continuous: see box2d_scenes.hpp).
+// and in Box2D 2.4.1 with identical geometry at 1/60 s per step (Impetus: 4 substeps, on
+// --threads N threads, default 1; Box2D: single-threaded, 8 velocity and 3 position iterations;
+// neither sleeps, and Box2D's continuous collision is off unless --box2d-continuous: see
+// box2d_scenes.hpp).
 //
-//   impetus-bench [--scene NAME]... [--steps N] [--engine both|impetus|box2d] [--box2d-continuous]
-//                 [--json]
+//   impetus-bench [--scene NAME]... [--steps N] [--threads N] [--engine both|impetus|box2d]
+//                 [--box2d-continuous] [--json]
 //
 // NAME is a scene (large_pyramid, many_pyramids, tumbler, rain_1k, rain_10k, rain_100k, or
 // rain_N / rain_Nk for other counts), "rain" (the three rain sizes) or "all" (the default). Each
@@ -18,6 +19,7 @@
 #include "box2d_scenes.hpp"
 #include "rigid2d_scenes.hpp"
 
+#include <impetus/core/task_runner.hpp>
 #include <impetus/error.hpp>
 
 #include <CLI/CLI.hpp>
@@ -27,6 +29,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -73,8 +76,13 @@ struct TopWatch {
   void observe(std::size_t i, float height) { maxSink = std::max(maxSink, startHeights[i] - height); }
 };
 
-EngineResult runImpetus(const bench::Rigid2dScene& scene, int steps) {
-  bench::ImpetusScene built = bench::buildImpetusScene(scene);
+EngineResult runImpetus(const bench::Rigid2dScene& scene, int steps, int threads) {
+  // One thread: no task runner at all (the world runs its loops inline).
+  std::unique_ptr<impetus::ThreadPool> pool;
+  if (threads > 1) {
+    pool = std::make_unique<impetus::ThreadPool>(threads);
+  }
+  bench::ImpetusScene built = bench::buildImpetusScene(scene, pool.get());
   EngineResult r;
   TopWatch watch(scene);
   std::vector<impetus::rigid2d::BodyId> tops;
@@ -165,8 +173,8 @@ int main(int argc, char** argv) {
   app.add_option("--engine", engine, "which engines to run")
       ->check(CLI::IsMember({"both", "impetus", "box2d"}))
       ->capture_default_str();
-  app.add_option("--threads", threads, "worker threads (the 2D world is single-threaded for now: 1)")
-      ->check(CLI::Range(1, 1))
+  app.add_option("--threads", threads, "threads for Impetus (a ThreadPool; Box2D 2.4.1 is single-threaded)")
+      ->check(CLI::Range(1, 64))
       ->capture_default_str();
   app.add_flag("--box2d-continuous", peerContinuous,
                "switch Box2D's continuous collision on (its own default; off here: nothing in these scenes is fast "
@@ -185,7 +193,8 @@ int main(int argc, char** argv) {
   const bool runI = engine != "box2d";
   const bool runB = engine != "impetus";
   if (!json) {
-    std::cout << "single-threaded, 1/60 s steps; Impetus " << impetus::rigid2d::WorldDef{}.substeps
+    std::cout << "Impetus on " << threads << (threads == 1 ? " thread" : " threads")
+              << ", Box2D single-threaded; 1/60 s steps; Impetus " << impetus::rigid2d::WorldDef{}.substeps
               << " substeps, Box2D 2.4.1 " << bench::box2dVelocityIterations << " velocity / "
               << bench::box2dPositionIterations << " position iterations, continuous collision "
               << (peerContinuous ? "on" : "off") << "; no sleeping\n"
@@ -203,7 +212,7 @@ int main(int argc, char** argv) {
     std::optional<EngineResult> ri;
     std::optional<EngineResult> rb;
     if (runI) {
-      ri = runImpetus(scene, steps);
+      ri = runImpetus(scene, steps, threads);
     }
     if (runB) {
       rb = runBox2D(scene, steps, peerContinuous);

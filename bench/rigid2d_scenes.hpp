@@ -102,7 +102,8 @@ struct ImpetusScene {
   rigid2d::World world;
   std::vector<rigid2d::BodyId> bodies;
 };
-[[nodiscard]] ImpetusScene buildImpetusScene(const Rigid2dScene& scene);
+/// `runner` (optional, not owned) runs the world's parallel loops.
+[[nodiscard]] ImpetusScene buildImpetusScene(const Rigid2dScene& scene, TaskRunner* runner = nullptr);
 /// Every body's transform, in scene order.
 [[nodiscard]] std::vector<Transform2f> bodyTransforms(const ImpetusScene& built);
 
