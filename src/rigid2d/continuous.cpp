@@ -1,4 +1,5 @@
-// Continuous collision: fast bodies against static shapes.
+// Continuous collision: fast bodies against static shapes (a swept core circle), and bullets
+// against everything (time of impact on GJK).
 #include "rigid2d/world_impl.hpp"
 
 #include <algorithm>
@@ -90,6 +91,50 @@ Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start,
   // Stop a linear slop short of the surface, along the motion.
   const float travelled = std::max(0.0f, first * length(motion) - linearSlop);
   return start + normalize(motion) * travelled;
+}
+
+bool sweepBullet(WorldState& w, Body& b, const Vec2f& startCenter, const Rot2f& startRotation) {
+  const float core = coreRadius(w, b);
+  const Vec2f motion = b.center - startCenter;
+  if (core <= 0.0f || lengthSquared(motion) <= core * core) {
+    return false; // slow this step: the discrete contacts see everything it can meet
+  }
+  const Sweep bulletSweep{b.localCenter, startCenter, b.center, startRotation, b.transform.q};
+  const Transform2f startTransform{startCenter - rotate(startRotation, b.localCenter), startRotation};
+  float first = 1.0f;
+  for (std::uint32_t slot : b.shapes) {
+    const Shape& bulletShape = w.shapes[slot];
+    if (bulletShape.sensor) {
+      continue;
+    }
+    const ShapeProxy bulletProxy = shapeProxy(bulletShape);
+    const AABB swept = merge(shapeBox(bulletShape, startTransform), shapeBox(bulletShape, b.transform));
+    const auto visit = [&](std::int32_t, std::uint64_t other64) {
+      const Shape& other = w.shapes[static_cast<std::size_t>(other64)];
+      const Body& otherBody = w.bodies[other.body];
+      if (other.body == bulletShape.body || other.sensor || otherBody.bullet ||
+          !shouldCollide(bulletShape.filter, other.filter)) {
+        return true; // bullets do not sweep against each other (as Box2D)
+      }
+      // The other body stands at its end-of-step place.
+      const Sweep still{otherBody.localCenter, otherBody.center, otherBody.center, otherBody.transform.q,
+                        otherBody.transform.q};
+      const TOIOutput toi = timeOfImpact(shapeProxy(other), still, bulletProxy, bulletSweep, first);
+      if (toi.state == TOIOutput::State::hit && toi.fraction < first) {
+        first = toi.fraction;
+      }
+      return true;
+    };
+    w.staticTree.query(swept, visit);
+    w.movingTree.query(swept, visit);
+  }
+  if (first >= 1.0f) {
+    return false;
+  }
+  const Transform2f xf = sweepTransform(bulletSweep, first);
+  b.transform = xf;
+  b.center = transformPoint(xf, b.localCenter);
+  return true;
 }
 
 } // namespace impetus::rigid2d::detail

@@ -21,6 +21,10 @@ Body& WorldState::body(BodyId id) {
 
 const Body& WorldState::body(BodyId id) const { return const_cast<WorldState*>(this)->body(id); }
 
+ShapeProxy shapeProxy(const Shape& s) {
+  return std::visit([](const auto& g) { return makeProxy(g); }, s.geometry);
+}
+
 AABB shapeBox(const Shape& s, const Transform2f& xf) {
   return std::visit([&](const auto& g) { return computeAABB(g, xf); }, s.geometry);
 }
@@ -33,17 +37,11 @@ using detail::Body;
 using detail::Contact;
 using detail::Shape;
 using detail::shapeBox;
+using detail::shouldCollide;
 using detail::WorldState;
 
 std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
   return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-}
-
-bool shouldCollide(const Filter& a, const Filter& b) {
-  if (a.group == b.group && a.group != 0) {
-    return a.group > 0;
-  }
-  return (a.category & b.mask) != 0 && (b.category & a.mask) != 0;
 }
 
 /// Mass, centre of mass and inertia of a body from its shapes' densities.
@@ -334,6 +332,7 @@ BodyId World::createBody(const BodyDef& def) {
   b.angularDamping = def.angularDamping;
   b.gravityScale = def.gravityScale;
   b.fixedRotation = def.fixedRotation;
+  b.bullet = def.bullet;
   b.enableSleep = def.enableSleep;
   b.awake = def.isAwake;
   b.userData = def.userData;
@@ -531,13 +530,16 @@ void World::step(float dt) {
                                       contact.manifold.normal, contact.approachSpeed});
     }
   }
-  // Finalize: apply the deltas, clear forces, refresh the broadphase.
+  // Finalize: apply the deltas, clear forces, refresh the broadphase. Bullets come last: they
+  // sweep against where everything else ended up.
+  w.bullets.clear();
   for (std::uint32_t i = 0; i < w.awakeBodies.size(); ++i) {
     Body& b = w.bodies[w.awakeBodies[i]];
     const detail::BodyState& s = w.states[i];
     b.linearVelocity = s.v;
     b.angularVelocity = s.w;
     const Vec2f start = b.center;
+    const Rot2f startRotation = b.transform.q;
     b.center += s.dp;
     if (b.type == BodyType::dynamicBody) {
       b.center = detail::sweepAgainstStatic(w, b, start, b.center);
@@ -546,6 +548,15 @@ void World::step(float dt) {
     b.transform = {b.center - rotate(q, b.localCenter), q};
     b.force = {};
     b.torque = 0.0f;
+    if (b.bullet && b.type == BodyType::dynamicBody) {
+      w.bullets.push_back({w.awakeBodies[i], start, startRotation});
+    } else {
+      synchronizeShapes(w, b);
+    }
+  }
+  for (const detail::BulletStart& bullet : w.bullets) {
+    Body& b = w.bodies[bullet.body];
+    detail::sweepBullet(w, b, bullet.center, bullet.rotation);
     synchronizeShapes(w, b);
   }
   if (w.def.enableSleep) {

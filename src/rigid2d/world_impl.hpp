@@ -5,6 +5,7 @@
 
 #include <impetus/core/id_pool.hpp>
 #include <impetus/core/task_runner.hpp>
+#include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/dynamic_tree.hpp>
 #include <impetus/rigid2d/manifold.hpp>
 #include <impetus/rigid2d/world.hpp>
@@ -113,6 +114,13 @@ struct BodySim {
 
 struct ContactSolverData; // contact_solver.cpp
 
+/// Where a bullet started the step, for its sweep.
+struct BulletStart {
+  std::uint32_t body = 0;
+  Vec2f center;
+  Rot2f rotation;
+};
+
 struct WorldState {
   WorldState();
   ~WorldState();
@@ -144,6 +152,7 @@ struct WorldState {
   std::vector<BodyState> states;
   std::vector<BodySim> sims;
   std::unique_ptr<ContactSolverData> contactSolver;
+  std::vector<BulletStart> bullets; ///< scratch of the finalize pass
 
   ContactEvents contactEvents;
   SensorEvents sensorEvents;
@@ -166,6 +175,18 @@ struct StepContext {
   float inverseH = 0.0f; ///< 1/s
   int substeps = 1;
 };
+
+/// Whether two shapes' filters let them collide: A and B collide when each one's category is in
+/// the other's mask, unless they share a non-zero group (positive: always, negative: never).
+[[nodiscard]] inline bool shouldCollide(const Filter& a, const Filter& b) {
+  if (a.group == b.group && a.group != 0) {
+    return a.group > 0;
+  }
+  return (a.category & b.mask) != 0 && (b.category & a.mask) != 0;
+}
+
+/// The shape as GJK sees it (its core points and radius), in the body frame.
+[[nodiscard]] ShapeProxy shapeProxy(const Shape& s);
 
 /// A shape's world bounding box.
 [[nodiscard]] AABB shapeBox(const Shape& s, const Transform2f& xf);
@@ -203,6 +224,10 @@ void updateSleep(WorldState& w, float dt);
 // continuous.cpp
 /// Where a fast body may go from `start` toward `end` without passing a static shape.
 [[nodiscard]] Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start, const Vec2f& end);
+/// Continuous collision of a bullet body that moved from (startCenter, startRotation) to where
+/// it is now against every non-bullet shape at its end-of-step place: the bullet is moved back
+/// to its first time of impact. Returns whether it was.
+bool sweepBullet(WorldState& w, Body& b, const Vec2f& startCenter, const Rot2f& startRotation);
 
 } // namespace impetus::rigid2d::detail
 

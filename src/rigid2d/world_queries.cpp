@@ -108,6 +108,43 @@ std::vector<ShapeId> World::queryPoint(const Vec2f& point) const {
   return found;
 }
 
+std::optional<RayHit> World::castShape(const ShapeProxy& proxy, const Transform2f& transform,
+                                       const Vec2f& translation) const {
+  if (proxy.count < 1 || proxy.count > maxPolygonVertices) {
+    throwInvalid("proxy.count", proxy.count, "must be 1 to 8 points");
+  }
+  requireFinite(transform.p, "transform.p");
+  requireFinite(translation, "translation");
+  const Impl& w = *impl_;
+  // The box the proxy sweeps through.
+  AABB start{transformPoint(transform, proxy.points[0]), transformPoint(transform, proxy.points[0])};
+  for (int i = 1; i < proxy.count; ++i) {
+    const Vec2f p = transformPoint(transform, proxy.points[static_cast<std::size_t>(i)]);
+    start = {min(start.lower, p), max(start.upper, p)};
+  }
+  start = enlarge(start, proxy.radius);
+  const AABB swept = merge(start, AABB{start.lower + translation, start.upper + translation});
+  std::optional<RayHit> best;
+  const auto visit = [&](std::int32_t, std::uint64_t slot64) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    if (s.sensor) {
+      return true;
+    }
+    const float maxFraction = best ? best->fraction : 1.0f;
+    const ShapeCastInput input{
+        detail::shapeProxy(s), w.bodies[s.body].transform, proxy, transform, translation, maxFraction};
+    const CastOutput out = shapeCast(input);
+    if (out.hit && (!best || out.fraction < best->fraction ||
+                    (out.fraction == best->fraction && s.id.index < best->shape.index))) {
+      best = RayHit{s.id, out.point, out.normal, out.fraction};
+    }
+    return true;
+  };
+  w.staticTree.query(swept, visit);
+  w.movingTree.query(swept, visit);
+  return best;
+}
+
 BodyId World::shapeBody(ShapeId shape) const {
   if (!impl_->shapeIds.isValidId(shape)) {
     throwInvalid("shape id", static_cast<double>(shape.index), "shape does not exist");

@@ -28,7 +28,7 @@ struct BodyDef {
   float angularDamping = 0.0f;  ///< 1/s
   float gravityScale = 1.0f;
   bool fixedRotation = false;
-  bool bullet = false;     ///< continuous collision against dynamic bodies too (CCD: not yet)
+  bool bullet = false;     ///< continuous collision against dynamic bodies too (time of impact)
   bool enableSleep = true; ///< may fall asleep when at rest
   bool isAwake = true;
   std::uint64_t userData = 0;
@@ -51,7 +51,7 @@ struct ShapeDef {
   /// 0.001 (steel on steel) to 0.3 (tyre on sand). The pair uses the larger of the two.
   float rollingResistance = 0.0f;
   Filter filter;
-  bool isSensor = false; ///< detects overlap, no collision response (events: not yet)
+  bool isSensor = false; ///< detects overlap (sensor events), no collision response
   std::uint64_t userData = 0;
 };
 

@@ -9,12 +9,13 @@
 // contacts that approached faster than restitutionThreshold. Everything runs in a fixed order:
 // the same inputs give bit-identical results.
 //
-// Landed so far: bodies, shapes, broadphase, narrowphase, the soft-step contact solver with
-// friction and restitution, ray casts. To come: joints, sleeping, continuous collision, events,
-// graph colouring and threads.
+// Contacts are coloured so that a colour's constraints share no moving body: they are solved
+// four at a time in SIMD lanes and, with a WorldDef::taskRunner, on several threads, with
+// bit-identical results either way. docs/rigid2d.md explains the step and its tuning.
 #pragma once
 
 #include <impetus/math/transform2.hpp>
+#include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/geometry.hpp>
 #include <impetus/rigid2d/types.hpp>
 
@@ -118,6 +119,11 @@ public:
   [[nodiscard]] std::optional<RayHit> castRayClosest(const Vec2f& origin, const Vec2f& translation) const;
   /// Every shape the ray hits (sensors excluded), nearest first.
   [[nodiscard]] std::vector<RayHit> castRayAll(const Vec2f& origin, const Vec2f& translation) const;
+  /// The first shape that `proxy` (placed by `transform`, moved by `translation`) touches, if
+  /// any (sensors excluded): fraction of the translation, the point on the hit shape and its
+  /// normal (toward the cast shape). A proxy that starts touching a shape hits it at 0.
+  [[nodiscard]] std::optional<RayHit> castShape(const ShapeProxy& proxy, const Transform2f& transform,
+                                                const Vec2f& translation) const;
   /// Shapes whose bounding boxes overlap `box`, in a fixed order.
   [[nodiscard]] std::vector<ShapeId> queryAABB(const AABB& box) const;
   /// Shapes that contain the world point (sensors included).
