@@ -46,7 +46,8 @@ void updateSleep(WorldState& w, float dt) {
                       std::abs(b.angularVelocity) <= d.sleepAngularTolerance;
     b.sleepTime = (b.enableSleep && slow) ? b.sleepTime + dt : 0.0f;
   }
-  std::vector<std::uint32_t> parent(w.bodies.size());
+  std::vector<std::uint32_t>& parent = w.islandParent;
+  parent.resize(w.bodies.size());
   for (std::uint32_t i = 0; i < parent.size(); ++i) {
     parent[i] = i;
   }
@@ -62,7 +63,8 @@ void updateSleep(WorldState& w, float dt) {
     }
   }
   // The least rest time of each island, at its root.
-  std::vector<float> islandRest(w.bodies.size(), std::numeric_limits<float>::max());
+  std::vector<float>& islandRest = w.islandRest;
+  islandRest.assign(w.bodies.size(), std::numeric_limits<float>::max());
   for (const Body& b : w.bodies) {
     if (b.moving()) {
       float& rest = islandRest[findRoot(parent, b.id.index)];

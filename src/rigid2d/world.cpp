@@ -511,8 +511,17 @@ void World::step(float dt) {
     throwInvalid("dt", dt, "time step must be in (0, 1] s");
   }
   Impl& w = *impl_;
-  w.contactEvents = std::exchange(w.pendingEvents, {});
-  w.sensorEvents = std::exchange(w.pendingSensorEvents, {});
+  // Last step's events make way for this step's, starting with those raised since (destroyed
+  // bodies); the vectors keep their capacity, so a warmed-up step does not allocate.
+  const auto take = [](auto& into, auto& from) {
+    into.assign(from.begin(), from.end());
+    from.clear();
+  };
+  take(w.contactEvents.begins, w.pendingEvents.begins);
+  take(w.contactEvents.ends, w.pendingEvents.ends);
+  take(w.contactEvents.hits, w.pendingEvents.hits);
+  take(w.sensorEvents.begins, w.pendingSensorEvents.begins);
+  take(w.sensorEvents.ends, w.pendingSensorEvents.ends);
   updatePairs(w);
   collideContacts(w);
   detail::wakeTouched(w);

@@ -152,7 +152,9 @@ struct WorldState {
   std::vector<BodyState> states;
   std::vector<BodySim> sims;
   std::unique_ptr<ContactSolverData> contactSolver;
-  std::vector<BulletStart> bullets; ///< scratch of the finalize pass
+  std::vector<BulletStart> bullets;        ///< scratch of the finalize pass
+  std::vector<std::uint32_t> islandParent; ///< scratch of the sleep pass (union-find by body slot)
+  std::vector<float> islandRest;           ///< scratch of the sleep pass (least rest time per island)
 
   ContactEvents contactEvents;
   SensorEvents sensorEvents;

@@ -8,15 +8,36 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <memory>
+#include <type_traits>
 
 namespace impetus {
 
+/// A non-owning reference to a callable `void(std::uint32_t begin, std::uint32_t end)` that works
+/// on the indices [begin, end). Unlike std::function it never allocates: a world step hands out
+/// hundreds of loops and must not allocate once warmed up. It refers to the callable, which must
+/// outlive it (a lambda passed straight to parallelFor does).
+class RangeTask {
+public:
+  template <class F>
+  requires(!std::is_same_v<std::remove_cvref_t<F>, RangeTask> && std::is_invocable_v<F&, std::uint32_t, std::uint32_t>)
+      RangeTask(F&& f)
+  noexcept // NOLINT(google-explicit-constructor): built implicitly from lambdas
+      : object_(const_cast<void*>(static_cast<const void*>(std::addressof(f)))),
+        call_([](void* object, std::uint32_t begin, std::uint32_t end) {
+          (*static_cast<std::remove_reference_t<F>*>(object))(begin, end);
+        }) {}
+
+  void operator()(std::uint32_t begin, std::uint32_t end) const { call_(object_, begin, end); }
+
+private:
+  void* object_;
+  void (*call_)(void*, std::uint32_t, std::uint32_t);
+};
+
 class TaskRunner {
 public:
-  /// Work on the indices [begin, end).
-  using RangeTask = std::function<void(std::uint32_t begin, std::uint32_t end)>;
+  using RangeTask = impetus::RangeTask;
 
   TaskRunner() = default;
   TaskRunner(const TaskRunner&) = delete;

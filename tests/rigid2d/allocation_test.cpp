@@ -1,0 +1,79 @@
+// After warm-up, a world step allocates nothing: every per-step array is reused. This binary
+// replaces the global operator new to count allocations (which is why it is its own test
+// executable).
+#include <impetus/core/task_runner.hpp>
+#include <impetus/rigid2d/world.hpp>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<long> allocations{0};
+} // namespace
+
+void* operator new(std::size_t size) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace impetus::rigid2d {
+namespace {
+
+void buildScene(World& world) {
+  const BodyId ground = world.createBody({});
+  world.createShape(ground, {}, makeOffsetBox(30.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+  BodyDef def;
+  def.type = BodyType::dynamicBody;
+  for (int row = 0; row < 10; ++row) {
+    for (int i = 0; i < 10 - row; ++i) {
+      def.position = {static_cast<float>(i) - 0.5f * static_cast<float>(9 - row), 0.5f + static_cast<float>(row)};
+      world.createShape(world.createBody(def), {}, makeBox(0.5f, 0.5f));
+    }
+  }
+  ShapeDef bouncy;
+  bouncy.restitution = 0.5f;
+  for (int i = 0; i < 40; ++i) {
+    def.position = {12.0f + 0.6f * static_cast<float>(i % 10), 1.0f + 0.6f * static_cast<float>(i / 10)};
+    world.createShape(world.createBody(def), bouncy, Circle{{}, 0.25f});
+  }
+}
+
+long allocationsOverSteps(World& world, int steps) {
+  const long before = allocations.load();
+  for (int i = 0; i < steps; ++i) {
+    world.step(1.0f / 60.0f);
+  }
+  return allocations.load() - before;
+}
+
+TEST(Allocation2D, a_warmed_up_step_allocates_nothing) {
+  WorldDef def;
+  def.enableSleep = false;
+  World world(def);
+  const long beforeBuild = allocations.load();
+  buildScene(world);
+  ASSERT_GT(allocations.load(), beforeBuild) << "the counter must see the world being built";
+  (void)allocationsOverSteps(world, 240); // contacts created, arrays grown, piles settled
+  EXPECT_EQ(allocationsOverSteps(world, 120), 0);
+}
+
+TEST(Allocation2D, nor_with_sleeping_and_a_thread_pool) {
+  ThreadPool pool(2);
+  WorldDef def;
+  def.taskRunner = &pool;
+  World world(def);
+  buildScene(world);
+  (void)allocationsOverSteps(world, 240);
+  EXPECT_EQ(allocationsOverSteps(world, 120), 0);
+}
+
+} // namespace
+} // namespace impetus::rigid2d
