@@ -19,9 +19,11 @@ struct ThreadPool::Impl {
   const RangeTask* task = nullptr;
   std::uint32_t count = 0;
   std::uint32_t rangeSize = 1;
-  std::atomic<std::uint32_t> rangeCount{0}; ///< read before a claim proves the loop current
-  /// The loop's generation (high 32 bits) and its next unclaimed range (low 32 bits): a thread
-  /// that lags behind can never claim a range of a later loop with the task of an earlier one.
+  std::uint32_t rangeCount = 0; ///< of the current loop (the calling thread's copy)
+  /// The loop's generation (bits 32-63), its range count (bits 16-31) and its next unclaimed
+  /// range (bits 0-15), in one word: a thread that lags behind checks and claims against the
+  /// same value, so it can never claim a range of a later loop while thinking it belongs to an
+  /// earlier one. (A loop has at most 4 ranges per thread, so 16 bits are plenty.)
   std::atomic<std::uint64_t> claim{0};
   std::atomic<std::uint32_t> doneRanges{0};
   std::atomic<std::uint64_t> generation{0};
@@ -36,15 +38,15 @@ struct ThreadPool::Impl {
     for (;;) {
       std::uint64_t current = claim.load(std::memory_order_acquire);
       for (;;) {
-        if ((current >> 32) != (gen & 0xffffffffU) ||
-            (current & 0xffffffffU) >= rangeCount.load(std::memory_order_relaxed)) {
+        const std::uint64_t ranges = (current >> 16) & 0xffffU;
+        if ((current >> 32) != (gen & 0xffffffffU) || (current & 0xffffU) >= ranges) {
           return;
         }
         if (claim.compare_exchange_weak(current, current + 1, std::memory_order_acq_rel)) {
           break;
         }
       }
-      const auto r = static_cast<std::uint32_t>(current & 0xffffffffU);
+      const auto r = static_cast<std::uint32_t>(current & 0xffffU);
       const std::uint32_t begin = r * rangeSize;
       (*task)(begin, std::min(count, begin + rangeSize));
       doneRanges.fetch_add(1, std::memory_order_acq_rel);
@@ -119,15 +121,15 @@ void ThreadPool::parallelFor(std::uint32_t count, std::uint32_t minRange, const 
     p.task = &task;
     p.count = count;
     p.rangeSize = target;
-    p.rangeCount.store((count + target - 1) / target, std::memory_order_relaxed);
+    p.rangeCount = (count + target - 1) / target; // <= 4 per thread: fits the claim's 16 bits
     p.doneRanges.store(0, std::memory_order_relaxed);
     gen = p.generation.load(std::memory_order_relaxed) + 1;
-    p.claim.store((gen & 0xffffffffU) << 32, std::memory_order_release);
+    p.claim.store(((gen & 0xffffffffU) << 32) | (std::uint64_t{p.rangeCount} << 16), std::memory_order_release);
     p.generation.store(gen, std::memory_order_release);
   }
   p.wakeUp.notify_all();
   p.work(gen);
-  while (p.doneRanges.load(std::memory_order_acquire) < p.rangeCount.load(std::memory_order_relaxed)) {
+  while (p.doneRanges.load(std::memory_order_acquire) < p.rangeCount) {
     std::this_thread::yield();
   }
 }

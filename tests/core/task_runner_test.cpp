@@ -51,6 +51,24 @@ TEST(ThreadPool, many_short_loops_in_a_row) {
   }
 }
 
+// Back-to-back loops of very different sizes: a thread still finishing one loop must never run
+// a range of the next one (each index is counted, so a range run twice shows).
+TEST(ThreadPool, lagging_threads_never_run_a_range_of_the_next_loop_twice) {
+  ThreadPool pool(4);
+  std::vector<std::atomic<int>> visits(1000);
+  for (int loop = 0; loop < 20000; ++loop) {
+    const std::uint32_t count = loop % 2 == 0 ? 3U : 1000U;
+    pool.parallelFor(count, 1, [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t i = begin; i < end; ++i) {
+        visits[i].fetch_add(1, std::memory_order_relaxed);
+      }
+    });
+  }
+  for (std::uint32_t i = 0; i < 1000; ++i) {
+    ASSERT_EQ(visits[i].load(), i < 3 ? 20000 : 10000) << "index " << i;
+  }
+}
+
 TEST(ThreadPool, rejects_bad_thread_counts) {
   expectErrorField([] { ThreadPool pool(0); }, "threadCount");
   expectErrorField([] { ThreadPool pool(-3); }, "threadCount");
