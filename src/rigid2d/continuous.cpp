@@ -73,6 +73,8 @@ Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start,
             return rayCast(Capsule{g.center1, g.center2, g.radius + core}, ray);
           } else if constexpr (std::is_same_v<G, Segment>) {
             return rayCast(Capsule{g.point1, g.point2, core}, ray);
+          } else if constexpr (std::is_same_v<G, ChainSegment>) {
+            return rayCast(Capsule{g.segment.point1, g.segment.point2, core}, ray);
           } else {
             Polygon inflated = g;
             inflated.radius += core;

@@ -22,7 +22,15 @@ Body& WorldState::body(BodyId id) {
 const Body& WorldState::body(BodyId id) const { return const_cast<WorldState*>(this)->body(id); }
 
 ShapeProxy shapeProxy(const Shape& s) {
-  return std::visit([](const auto& g) { return makeProxy(g); }, s.geometry);
+  return std::visit(
+      [](const auto& g) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(g)>, ChainSegment>) {
+          return makeProxy(g.segment);
+        } else {
+          return makeProxy(g);
+        }
+      },
+      s.geometry);
 }
 
 AABB shapeBox(const Shape& s, const Transform2f& xf) {
@@ -57,12 +65,13 @@ void updateMass(WorldState& w, Body& b) {
   float inertiaAboutOrigin = 0.0f;
   for (std::uint32_t slot : b.shapes) {
     const Shape& s = w.shapes[slot];
-    if (s.density == 0.0f || std::holds_alternative<Segment>(s.geometry)) {
+    if (s.density == 0.0f || detail::isLine(s.geometry)) {
       continue;
     }
     const MassData md = std::visit(
         [&](const auto& g) -> MassData {
-          if constexpr (std::is_same_v<std::decay_t<decltype(g)>, Segment>) {
+          using G = std::decay_t<decltype(g)>;
+          if constexpr (std::is_same_v<G, Segment> || std::is_same_v<G, ChainSegment>) {
             return {};
           } else {
             return computeMass(g, s.density);
@@ -90,7 +99,34 @@ void updateMass(WorldState& w, Body& b) {
   b.center = transformPoint(b.transform, b.localCenter);
 }
 
+/// A manifold computed with the shapes the other way round, turned back to A -> B.
+Manifold reversed(Manifold m) {
+  m.normal = -m.normal;
+  for (int i = 0; i < m.pointCount; ++i) {
+    std::swap(m.points[static_cast<std::size_t>(i)].anchorA, m.points[static_cast<std::size_t>(i)].anchorB);
+  }
+  return m;
+}
+
+/// A chain segment against any other shape (chain against a line: nothing).
+Manifold collideChain(const ChainSegment& chain, const Transform2f& xfChain, const Shape& other,
+                      const Transform2f& xfOther) {
+  if (const auto* circle = std::get_if<Circle>(&other.geometry)) {
+    return collideChainSegmentAndCircle(chain, xfChain, *circle, xfOther);
+  }
+  if (detail::isLine(other.geometry)) {
+    return {};
+  }
+  return collideChainSegmentAndPolygon(chain, xfChain, other.collisionPolygon, xfOther);
+}
+
 Manifold collide(const Shape& a, const Transform2f& xfA, const Shape& b, const Transform2f& xfB) {
+  if (const auto* chain = std::get_if<ChainSegment>(&a.geometry)) {
+    return collideChain(*chain, xfA, b, xfB);
+  }
+  if (const auto* chain = std::get_if<ChainSegment>(&b.geometry)) {
+    return reversed(collideChain(*chain, xfB, a, xfA));
+  }
   const Circle* ca = std::get_if<Circle>(&a.geometry);
   const Circle* cb = std::get_if<Circle>(&b.geometry);
   if (ca != nullptr && cb != nullptr) {
@@ -101,12 +137,7 @@ Manifold collide(const Shape& a, const Transform2f& xfA, const Shape& b, const T
   }
   if (ca != nullptr) {
     // Circle first: collide the other way round and turn the result around.
-    Manifold m = collidePolygonAndCircle(b.collisionPolygon, xfB, *ca, xfA);
-    m.normal = -m.normal;
-    for (int i = 0; i < m.pointCount; ++i) {
-      std::swap(m.points[static_cast<std::size_t>(i)].anchorA, m.points[static_cast<std::size_t>(i)].anchorB);
-    }
-    return m;
+    return reversed(collidePolygonAndCircle(b.collisionPolygon, xfB, *ca, xfA));
   }
   return collidePolygons(a.collisionPolygon, xfA, b.collisionPolygon, xfB);
 }
@@ -384,8 +415,7 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
   if (!(def.restitution >= 0.0f && def.restitution <= 1.0f)) {
     throwInvalid("restitution", def.restitution, "must be in [0, 1]");
   }
-  if (b.type == BodyType::dynamicBody && def.density == 0.0f && !def.isSensor &&
-      !std::holds_alternative<Segment>(geometry)) {
+  if (b.type == BodyType::dynamicBody && def.density == 0.0f && !def.isSensor && !detail::isLine(geometry)) {
     throwInvalid("density", def.density, "a shape on a dynamic body needs a positive density");
   }
   const ShapeId id = w.shapeIds.allocateId<ShapeTag>();
@@ -401,6 +431,8 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
     s.collisionPolygon = asPolygon(*capsule);
   } else if (const auto* segment = std::get_if<Segment>(&geometry)) {
     s.collisionPolygon = asPolygon(*segment);
+  } else if (const auto* chain = std::get_if<ChainSegment>(&geometry)) {
+    s.collisionPolygon = asPolygon(chain->segment);
   }
   s.body = bodyId.index;
   s.density = def.density;
@@ -450,6 +482,15 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segm
     throwInvalid("point2", 0.0, "segment is too short");
   }
   return addShape(*impl_, body, def, segment);
+}
+
+std::vector<ShapeId> World::createChain(BodyId body, const ShapeDef& def, const ChainDef& chain) {
+  impl_->body(body); // a clear error for a bad id before the points are checked
+  std::vector<ShapeId> ids;
+  for (const ChainSegment& segment : makeChainSegments(chain)) {
+    ids.push_back(addShape(*impl_, body, def, segment));
+  }
+  return ids;
 }
 
 Transform2f World::transform(BodyId id) const { return impl_->body(id).transform; }

@@ -5,6 +5,7 @@
 
 #include <impetus/core/id_pool.hpp>
 #include <impetus/core/task_runner.hpp>
+#include <impetus/rigid2d/chain.hpp>
 #include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/dynamic_tree.hpp>
 #include <impetus/rigid2d/manifold.hpp>
@@ -17,7 +18,12 @@
 
 namespace impetus::rigid2d::detail {
 
-using Geometry = std::variant<Circle, Capsule, Polygon, Segment>;
+using Geometry = std::variant<Circle, Capsule, Polygon, Segment, ChainSegment>;
+
+/// Shapes without area (segments and chain segments): no mass, nothing inside.
+[[nodiscard]] inline bool isLine(const Geometry& g) {
+  return std::holds_alternative<Segment>(g) || std::holds_alternative<ChainSegment>(g);
+}
 
 struct Shape {
   Geometry geometry;

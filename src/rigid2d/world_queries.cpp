@@ -90,7 +90,8 @@ std::vector<ShapeId> World::queryPoint(const Vec2f& point) const {
     const Vec2f local = inverseTransformPoint(w.bodies[s.body].transform, point);
     const bool inside = std::visit(
         [&](const auto& g) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(g)>, Segment>) {
+          using G = std::decay_t<decltype(g)>;
+          if constexpr (std::is_same_v<G, Segment> || std::is_same_v<G, ChainSegment>) {
             return false;
           } else {
             return containsPoint(g, local);

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <impetus/math/transform2.hpp>
+#include <impetus/rigid2d/chain.hpp>
 #include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/geometry.hpp>
 #include <impetus/rigid2d/types.hpp>
@@ -87,6 +88,10 @@ public:
   ShapeId createShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
   ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
   ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
+  /// A chain of one-sided segments (terrain; see chain.hpp for which side is solid): one shape
+  /// per segment, in order, with no ghost collisions at the joins. Throws impetus::Error naming
+  /// `points` for fewer than 2 points (3 for a loop), non-finite or repeated points.
+  std::vector<ShapeId> createChain(BodyId body, const ShapeDef& def, const ChainDef& chain);
   [[nodiscard]] std::size_t shapeCount() const noexcept;
   [[nodiscard]] std::size_t contactCount() const noexcept; ///< touching contacts
 
