@@ -101,38 +101,23 @@ struct BodiesW {
 };
 
 BodiesW gather(const std::vector<BodyState>& states, const std::array<std::uint32_t, simdWidth>& index) {
-  BodiesW b;
-  FloatW r[4];
-  for (int i = 0; i < 4; ++i) {
-    r[i] = loadW(&states[index[static_cast<std::size_t>(i)]].v.x);
+  const float* rows[simdWidth];
+  for (std::size_t i = 0; i < simdWidth; ++i) {
+    rows[i] = &states[index[i]].v.x;
   }
-  transposeW(r[0], r[1], r[2], r[3]);
-  b.vx = r[0];
-  b.vy = r[1];
-  b.w = r[2];
-  for (int i = 0; i < 4; ++i) {
-    r[i] = loadW(&states[index[static_cast<std::size_t>(i)]].dp.x);
-  }
-  transposeW(r[0], r[1], r[2], r[3]);
-  b.dpx = r[0];
-  b.dpy = r[1];
-  b.dqc = r[2];
-  b.dqs = r[3];
-  return b;
+  FloatW columns[8];
+  loadRowsW(rows, columns);
+  return {columns[0], columns[1], columns[2], columns[4], columns[5], columns[6], columns[7]};
 }
 
 /// Writes the velocities back, except to the static state.
 void scatter(std::vector<BodyState>& states, const std::array<std::uint32_t, simdWidth>& index,
              std::uint32_t staticIndex, const BodiesW& b) {
-  FloatW r0 = b.vx, r1 = b.vy, r2 = b.w, r3 = zeroW();
-  transposeW(r0, r1, r2, r3);
-  const FloatW rows[4] = {r0, r1, r2, r3};
-  for (int i = 0; i < 4; ++i) {
-    const std::uint32_t k = index[static_cast<std::size_t>(i)];
-    if (k != staticIndex) {
-      storeW(&states[k].v.x, rows[i]);
-    }
+  float* rows[simdWidth];
+  for (std::size_t i = 0; i < simdWidth; ++i) {
+    rows[i] = index[i] == staticIndex ? nullptr : &states[index[i]].v.x;
   }
+  storeRowHeadsW(rows, b.vx, b.vy, b.w, zeroW());
 }
 
 } // namespace
@@ -423,13 +408,15 @@ void solveWide(ContactConstraintWide& c, std::vector<BodyState>& states, std::ui
     p.tangentImpulse = total;
     applyW(a, b, c, p, applied * tx, applied * ty);
   }
-  // Rolling resistance (zero rolling mass in lanes without).
-  const FloatW limit = c.rollingResistance * totalNormal;
-  const FloatW total = maxW(minW(c.rollingImpulse - c.rollingMass * (b.w - a.w), limit), -limit);
-  const FloatW applied = total - c.rollingImpulse;
-  c.rollingImpulse = total;
-  a.w = a.w - c.invIA * applied;
-  b.w = b.w + c.invIB * applied;
+  if (anyNonZeroW(c.rollingMass)) {
+    // Rolling resistance (zero rolling mass in lanes without).
+    const FloatW limit = c.rollingResistance * totalNormal;
+    const FloatW total = maxW(minW(c.rollingImpulse - c.rollingMass * (b.w - a.w), limit), -limit);
+    const FloatW applied = total - c.rollingImpulse;
+    c.rollingImpulse = total;
+    a.w = a.w - c.invIA * applied;
+    b.w = b.w + c.invIB * applied;
+  }
   scatter(states, c.indexA, staticIndex, a);
   scatter(states, c.indexB, staticIndex, b);
 }
@@ -452,6 +439,9 @@ void warmStartWide(ContactConstraintWide& c, std::vector<BodyState>& states, std
 
 void restitutionWide(ContactConstraintWide& c, std::vector<BodyState>& states, std::uint32_t staticIndex,
                      float threshold) {
+  if (!anyNonZeroW(c.restitution)) {
+    return; // nothing bounces in this batch (the common case): skip the gather and scatter
+  }
   BodiesW a = gather(states, c.indexA);
   BodiesW b = gather(states, c.indexB);
   const FloatW zero = zeroW();

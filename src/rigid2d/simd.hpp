@@ -1,20 +1,104 @@
-// Four floats at once for the wide contact solver: SSE2 on x86-64 (always present there), plain
-// arrays elsewhere. Only what the solver needs; every operation is lane by lane, with no fused
-// multiply-add, so a lane computes exactly what the scalar solver would.
+// Several floats at once for the wide contact solver: eight with AVX2 (the build option
+// IMPETUS_ENABLE_AVX2, for machines that have it), four with SSE2 (always present on x86-64),
+// four plain floats elsewhere. Only what the solver needs; every operation is lane by lane, with
+// no fused multiply-add, so a lane computes exactly what the scalar solver would.
+//
+// Bodies are loaded and stored as rows of eight floats (BodyState: v.x, v.y, w, unused, dp.x,
+// dp.y, dq.c, dq.s) and transposed into one FloatW per field.
 #pragma once
 
 #include <cstdint>
 
-#if defined(__SSE2__)
+#if defined(IMPETUS_SIMD_AVX2) && defined(__AVX2__)
+#include <immintrin.h>
+#elif defined(__SSE2__)
 #include <emmintrin.h>
 #define IMPETUS_SIMD_SSE2 1
+#undef IMPETUS_SIMD_AVX2
+#else
+#undef IMPETUS_SIMD_AVX2
 #endif
 
 namespace impetus::rigid2d::detail {
 
-inline constexpr int simdWidth = 4;
+#if defined(IMPETUS_SIMD_AVX2)
 
-#if defined(IMPETUS_SIMD_SSE2)
+inline constexpr int simdWidth = 8;
+
+struct FloatW {
+  __m256 v;
+};
+
+inline FloatW splatW(float s) { return {_mm256_set1_ps(s)}; }
+inline FloatW zeroW() { return {_mm256_setzero_ps()}; }
+inline FloatW operator+(FloatW a, FloatW b) { return {_mm256_add_ps(a.v, b.v)}; }
+inline FloatW operator-(FloatW a, FloatW b) { return {_mm256_sub_ps(a.v, b.v)}; }
+inline FloatW operator*(FloatW a, FloatW b) { return {_mm256_mul_ps(a.v, b.v)}; }
+inline FloatW operator-(FloatW a) { return {_mm256_sub_ps(_mm256_setzero_ps(), a.v)}; }
+inline FloatW minW(FloatW a, FloatW b) { return {_mm256_min_ps(a.v, b.v)}; }
+inline FloatW maxW(FloatW a, FloatW b) { return {_mm256_max_ps(a.v, b.v)}; }
+inline FloatW greaterW(FloatW a, FloatW b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GT_OQ)}; }
+inline FloatW equalW(FloatW a, FloatW b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_EQ_OQ)}; }
+inline FloatW orW(FloatW a, FloatW b) { return {_mm256_or_ps(a.v, b.v)}; }
+inline FloatW selectW(FloatW mask, FloatW ifTrue, FloatW ifFalse) {
+  return {_mm256_blendv_ps(ifFalse.v, ifTrue.v, mask.v)};
+}
+inline bool anyNonZeroW(FloatW a) {
+  return _mm256_movemask_ps(_mm256_cmp_ps(a.v, _mm256_setzero_ps(), _CMP_NEQ_OQ)) != 0;
+}
+
+/// Eight rows of eight floats (one per body) into eight columns (one per field).
+inline void loadRowsW(const float* const (&rows)[8], FloatW (&columns)[8]) {
+  __m256 r[8];
+  for (int i = 0; i < 8; ++i) {
+    r[i] = _mm256_loadu_ps(rows[i]);
+  }
+  const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]);
+  const __m256 t1 = _mm256_unpackhi_ps(r[0], r[1]);
+  const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]);
+  const __m256 t3 = _mm256_unpackhi_ps(r[2], r[3]);
+  const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]);
+  const __m256 t5 = _mm256_unpackhi_ps(r[4], r[5]);
+  const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]);
+  const __m256 t7 = _mm256_unpackhi_ps(r[6], r[7]);
+  const __m256 s0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 s2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 s4 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s5 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 s6 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s7 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(3, 2, 3, 2));
+  columns[0].v = _mm256_permute2f128_ps(s0, s4, 0x20);
+  columns[1].v = _mm256_permute2f128_ps(s1, s5, 0x20);
+  columns[2].v = _mm256_permute2f128_ps(s2, s6, 0x20);
+  columns[3].v = _mm256_permute2f128_ps(s3, s7, 0x20);
+  columns[4].v = _mm256_permute2f128_ps(s0, s4, 0x31);
+  columns[5].v = _mm256_permute2f128_ps(s1, s5, 0x31);
+  columns[6].v = _mm256_permute2f128_ps(s2, s6, 0x31);
+  columns[7].v = _mm256_permute2f128_ps(s3, s7, 0x31);
+}
+
+/// Writes columns c0..c3 as the first four floats of each row (null rows are skipped).
+inline void storeRowHeadsW(float* const (&rows)[8], FloatW c0, FloatW c1, FloatW c2, FloatW c3) {
+  for (int half = 0; half < 2; ++half) {
+    __m128 a = half == 0 ? _mm256_castps256_ps128(c0.v) : _mm256_extractf128_ps(c0.v, 1);
+    __m128 b = half == 0 ? _mm256_castps256_ps128(c1.v) : _mm256_extractf128_ps(c1.v, 1);
+    __m128 c = half == 0 ? _mm256_castps256_ps128(c2.v) : _mm256_extractf128_ps(c2.v, 1);
+    __m128 d = half == 0 ? _mm256_castps256_ps128(c3.v) : _mm256_extractf128_ps(c3.v, 1);
+    _MM_TRANSPOSE4_PS(a, b, c, d);
+    const __m128 out[4] = {a, b, c, d};
+    for (int i = 0; i < 4; ++i) {
+      if (float* row = rows[4 * half + i]; row != nullptr) {
+        _mm_storeu_ps(row, out[i]);
+      }
+    }
+  }
+}
+
+#elif defined(IMPETUS_SIMD_SSE2)
+
+inline constexpr int simdWidth = 4;
 
 struct FloatW {
   __m128 v;
@@ -40,8 +124,12 @@ inline FloatW selectW(FloatW mask, FloatW ifTrue, FloatW ifFalse) {
 }
 /// Transposes four rows of four floats in place.
 inline void transposeW(FloatW& a, FloatW& b, FloatW& c, FloatW& d) { _MM_TRANSPOSE4_PS(a.v, b.v, c.v, d.v); }
+/// Whether any lane of a is non-zero (a mask or a value: -0.0 counts as zero).
+inline bool anyNonZeroW(FloatW a) { return _mm_movemask_ps(_mm_cmpneq_ps(a.v, _mm_setzero_ps())) != 0; }
 
 #else
+
+inline constexpr int simdWidth = 4;
 
 struct FloatW {
   float v[4];
@@ -95,6 +183,7 @@ inline FloatW selectW(FloatW mask, FloatW ifTrue, FloatW ifFalse) {
   }
   return r;
 }
+inline bool anyNonZeroW(FloatW a) { return a.v[0] != 0.0f || a.v[1] != 0.0f || a.v[2] != 0.0f || a.v[3] != 0.0f; }
 inline void transposeW(FloatW& a, FloatW& b, FloatW& c, FloatW& d) {
   FloatW* rows[4] = {&a, &b, &c, &d};
   FloatW t[4];
@@ -109,6 +198,33 @@ inline void transposeW(FloatW& a, FloatW& b, FloatW& c, FloatW& d) {
   d = t[3];
 }
 
+#endif
+
+#if !defined(IMPETUS_SIMD_AVX2)
+/// Four rows of eight floats (one per body) into eight columns (one per field).
+inline void loadRowsW(const float* const (&rows)[4], FloatW (&columns)[8]) {
+  for (int half = 0; half < 2; ++half) {
+    FloatW r[4];
+    for (int i = 0; i < 4; ++i) {
+      r[i] = loadW(rows[i] + 4 * half);
+    }
+    transposeW(r[0], r[1], r[2], r[3]);
+    for (int i = 0; i < 4; ++i) {
+      columns[4 * half + i] = r[i];
+    }
+  }
+}
+
+/// Writes columns c0..c3 as the first four floats of each row (null rows are skipped).
+inline void storeRowHeadsW(float* const (&rows)[4], FloatW c0, FloatW c1, FloatW c2, FloatW c3) {
+  transposeW(c0, c1, c2, c3);
+  const FloatW out[4] = {c0, c1, c2, c3};
+  for (int i = 0; i < 4; ++i) {
+    if (rows[i] != nullptr) {
+      storeW(rows[i], out[i]);
+    }
+  }
+}
 #endif
 
 } // namespace impetus::rigid2d::detail
