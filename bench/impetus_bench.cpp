@@ -4,8 +4,8 @@
 // neither sleeps, and Box2D's continuous collision is off unless --box2d-continuous: see
 // box2d_scenes.hpp).
 //
-//   impetus-bench [--scene NAME]... [--steps N] [--threads N] [--engine both|impetus|box2d]
-//                 [--box2d-continuous] [--json]
+//   impetus-bench [--scene NAME]... [--steps N] [--threads N] [--substeps N] [--contact-hertz H]
+//                 [--engine both|impetus|box2d] [--box2d-continuous] [--json]
 //
 // NAME is a scene (large_pyramid, many_pyramids, tumbler, rain_1k, rain_10k, rain_100k, or
 // rain_N / rain_Nk for other counts), "rain" (the three rain sizes) or "all" (the default). Each
@@ -76,13 +76,14 @@ struct TopWatch {
   void observe(std::size_t i, float height) { maxSink = std::max(maxSink, startHeights[i] - height); }
 };
 
-EngineResult runImpetus(const bench::Rigid2dScene& scene, int steps, int threads) {
+EngineResult runImpetus(const bench::Rigid2dScene& scene, int steps, int threads, bench::ImpetusSettings settings) {
   // One thread: no task runner at all (the world runs its loops inline).
   std::unique_ptr<impetus::ThreadPool> pool;
   if (threads > 1) {
     pool = std::make_unique<impetus::ThreadPool>(threads);
   }
-  bench::ImpetusScene built = bench::buildImpetusScene(scene, pool.get());
+  settings.runner = pool.get();
+  bench::ImpetusScene built = bench::buildImpetusScene(scene, settings);
   EngineResult r;
   TopWatch watch(scene);
   std::vector<impetus::rigid2d::BodyId> tops;
@@ -163,6 +164,7 @@ int main(int argc, char** argv) {
   std::optional<int> stepsOverride;
   std::string engine = "both";
   int threads = 1;
+  bench::ImpetusSettings settings;
   bool json = false;
   bool peerContinuous = false;
   app.add_option("--scene", requested,
@@ -172,6 +174,13 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--engine", engine, "which engines to run")
       ->check(CLI::IsMember({"both", "impetus", "box2d"}))
+      ->capture_default_str();
+  app.add_option("--substeps", settings.substeps, "Impetus solver substeps per step")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  app.add_option("--contact-hertz", settings.contactHertz,
+                 "Impetus contact stiffness, Hz (capped at a quarter of the substep rate)")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--threads", threads, "threads for Impetus (a ThreadPool; Box2D 2.4.1 is single-threaded)")
       ->check(CLI::Range(1, 64))
@@ -194,8 +203,8 @@ int main(int argc, char** argv) {
   const bool runB = engine != "impetus";
   if (!json) {
     std::cout << "Impetus on " << threads << (threads == 1 ? " thread" : " threads")
-              << ", Box2D single-threaded; 1/60 s steps; Impetus " << impetus::rigid2d::WorldDef{}.substeps
-              << " substeps, Box2D 2.4.1 " << bench::box2dVelocityIterations << " velocity / "
+              << ", Box2D single-threaded; 1/60 s steps; Impetus " << settings.substeps << " substeps at "
+              << settings.contactHertz << " Hz, Box2D 2.4.1 " << bench::box2dVelocityIterations << " velocity / "
               << bench::box2dPositionIterations << " position iterations, continuous collision "
               << (peerContinuous ? "on" : "off") << "; no sleeping\n"
               << "ms = per step; ratio = Box2D time / Impetus time; sink = how far the pyramid top dropped by the\n"
@@ -212,7 +221,7 @@ int main(int argc, char** argv) {
     std::optional<EngineResult> ri;
     std::optional<EngineResult> rb;
     if (runI) {
-      ri = runImpetus(scene, steps, threads);
+      ri = runImpetus(scene, steps, threads, settings);
     }
     if (runB) {
       rb = runBox2D(scene, steps, peerContinuous);
@@ -232,7 +241,8 @@ int main(int argc, char** argv) {
       j["threads"] = threads;
       if (ri) {
         j["impetus_ms_per_step"] = ri->msPerStep;
-        j["impetus_substeps"] = impetus::rigid2d::WorldDef{}.substeps;
+        j["impetus_substeps"] = settings.substeps;
+        j["impetus_contact_hertz"] = settings.contactHertz;
         if (!scene.tops.empty()) {
           j["impetus_top_sink_m"] = ri->topSink;
           j["impetus_top_max_sink_m"] = ri->topMaxSink;

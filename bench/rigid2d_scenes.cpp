@@ -199,9 +199,11 @@ Rigid2dScene makeRigid2dScene(std::string_view name) {
                   "' (large_pyramid, many_pyramids, tumbler, rain_N or rain_Nk: rain_1k, rain_10k, rain_100k)");
 }
 
-ImpetusScene buildImpetusScene(const Rigid2dScene& scene, TaskRunner* runner) {
+ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings& settings) {
   rigid2d::WorldDef def;
-  def.taskRunner = runner;
+  def.taskRunner = settings.runner;
+  def.substeps = settings.substeps;
+  def.contactHertz = settings.contactHertz;
   def.gravity = sceneGravity;
   def.enableSleep = false; // the benchmark times the solver, not the sleeping
   ImpetusScene built{rigid2d::World(def), {}};

@@ -102,8 +102,14 @@ struct ImpetusScene {
   rigid2d::World world;
   std::vector<rigid2d::BodyId> bodies;
 };
-/// `runner` (optional, not owned) runs the world's parallel loops.
-[[nodiscard]] ImpetusScene buildImpetusScene(const Rigid2dScene& scene, TaskRunner* runner = nullptr);
+/// Solver settings a benchmark run may change (the defaults are WorldDef's) and the task runner
+/// (optional, not owned) for the world's parallel loops.
+struct ImpetusSettings {
+  int substeps = rigid2d::WorldDef{}.substeps;
+  float contactHertz = rigid2d::WorldDef{}.contactHertz;
+  TaskRunner* runner = nullptr;
+};
+[[nodiscard]] ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings& settings = {});
 /// Every body's transform, in scene order.
 [[nodiscard]] std::vector<Transform2f> bodyTransforms(const ImpetusScene& built);
 
