@@ -28,6 +28,9 @@ struct ThreadPool::Impl {
   std::atomic<std::uint32_t> doneRanges{0};
   std::atomic<std::uint64_t> generation{0};
   std::atomic<bool> stopping{false};
+  /// Workers blocked on `wakeUp` (changed under `mutex`): the caller pays for a notify only when
+  /// someone sleeps.
+  std::atomic<int> sleepers{0};
   std::mutex mutex;
   std::condition_variable wakeUp;
 
@@ -65,9 +68,11 @@ struct ThreadPool::Impl {
       }
       if (g == seen) {
         std::unique_lock lock(mutex);
+        sleepers.fetch_add(1, std::memory_order_relaxed);
         wakeUp.wait(lock, [&] {
           return stopping.load(std::memory_order_acquire) || generation.load(std::memory_order_acquire) != seen;
         });
+        sleepers.fetch_sub(1, std::memory_order_relaxed);
         g = generation.load(std::memory_order_acquire);
       }
       if (stopping.load(std::memory_order_acquire)) {
@@ -127,7 +132,11 @@ void ThreadPool::parallelFor(std::uint32_t count, std::uint32_t minRange, const 
     p.claim.store(((gen & 0xffffffffU) << 32) | (std::uint64_t{p.rangeCount} << 16), std::memory_order_release);
     p.generation.store(gen, std::memory_order_release);
   }
-  p.wakeUp.notify_all();
+  // A worker that went to sleep did so under the mutex before the loop was published, so it is
+  // counted here; one that checks later sees the new generation and does not sleep.
+  if (p.sleepers.load(std::memory_order_relaxed) > 0) {
+    p.wakeUp.notify_all();
+  }
   p.work(gen);
   while (p.doneRanges.load(std::memory_order_acquire) < p.rangeCount) {
     std::this_thread::yield();

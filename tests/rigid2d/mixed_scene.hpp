@@ -1,0 +1,86 @@
+// A busy 2D scene and a hash of its exact state: what the determinism tests step with different
+// task runners and compare.
+#pragma once
+
+#include <impetus/core/task_runner.hpp>
+#include <impetus/rigid2d/world.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace impetus::rigid2d::test {
+
+/// FNV-1a over the exact bits of every body's transform and velocities.
+inline std::uint64_t stateHash(const World& world, const std::vector<BodyId>& bodies) {
+  std::uint64_t hash = 14695981039346656037ULL;
+  const auto mix = [&](float x) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits);
+    for (int i = 0; i < 4; ++i) {
+      hash = (hash ^ ((bits >> (8 * i)) & 0xffU)) * 1099511628211ULL;
+    }
+  };
+  for (BodyId b : bodies) {
+    const Transform2f xf = world.transform(b);
+    mix(xf.p.x);
+    mix(xf.p.y);
+    mix(xf.q.c);
+    mix(xf.q.s);
+    mix(world.linearVelocity(b).x);
+    mix(world.linearVelocity(b).y);
+    mix(world.angularVelocity(b));
+  }
+  return hash;
+}
+
+/// A busy scene (a pyramid, a rain of circles and capsules with restitution and rolling
+/// resistance, a spinning kinematic paddle) stepped 120 times; the hash of its final state.
+inline std::uint64_t runMixedScene(TaskRunner* runner) {
+  WorldDef def;
+  def.taskRunner = runner;
+  def.enableSleep = false;
+  World world(def);
+  std::vector<BodyId> bodies;
+  const BodyId ground = world.createBody({});
+  world.createShape(ground, {}, makeOffsetBox(40.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+  world.createShape(ground, {}, Segment{{-40.0f, 0.0f}, {-40.0f, 30.0f}});
+  world.createShape(ground, {}, Segment{{40.0f, 0.0f}, {40.0f, 30.0f}});
+  BodyDef dynamic;
+  dynamic.type = BodyType::dynamicBody;
+  for (int row = 0; row < 15; ++row) {
+    for (int i = 0; i < 15 - row; ++i) {
+      dynamic.position = {-20.0f + static_cast<float>(i) - 0.5f * static_cast<float>(14 - row),
+                          0.5f + static_cast<float>(row)};
+      const BodyId b = world.createBody(dynamic);
+      world.createShape(b, {}, makeBox(0.5f, 0.5f));
+      bodies.push_back(b);
+    }
+  }
+  ShapeDef bouncy;
+  bouncy.restitution = 0.3f;
+  bouncy.rollingResistance = 0.05f;
+  for (int i = 0; i < 400; ++i) {
+    dynamic.position = {5.0f + 0.61f * static_cast<float>(i % 40), 2.0f + 0.7f * static_cast<float>(i / 40)};
+    const BodyId b = world.createBody(dynamic);
+    if (i % 3 == 0) {
+      world.createShape(b, bouncy, Capsule{{-0.2f, 0.0f}, {0.2f, 0.0f}, 0.15f});
+    } else {
+      world.createShape(b, bouncy, Circle{{}, 0.25f});
+    }
+    bodies.push_back(b);
+  }
+  BodyDef paddle;
+  paddle.type = BodyType::kinematicBody;
+  paddle.position = {15.0f, 3.0f};
+  paddle.angularVelocity = 1.5f;
+  const BodyId p = world.createBody(paddle);
+  world.createShape(p, {}, makeBox(4.0f, 0.2f));
+  bodies.push_back(p);
+  for (int step = 0; step < 120; ++step) {
+    world.step(1.0f / 60.0f);
+  }
+  return stateHash(world, bodies);
+}
+
+} // namespace impetus::rigid2d::test
