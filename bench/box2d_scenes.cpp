@@ -4,7 +4,7 @@
 namespace impetus::bench {
 
 Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
-  Box2DScene built{std::make_unique<b2World>(b2Vec2(sceneGravity.x, sceneGravity.y)), {}};
+  Box2DScene built{std::make_unique<b2World>(b2Vec2(scene.gravity.x, scene.gravity.y)), {}};
   built.world->SetAllowSleeping(false);
   built.world->SetContinuousPhysics(continuous);
   built.bodies.reserve(scene.bodies.size());
@@ -23,6 +23,8 @@ Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
     }
     bd.position.Set(b.position.x, b.position.y);
     bd.angularVelocity = b.angularVelocity;
+    bd.linearVelocity = b2Vec2(b.linearVelocity.x, b.linearVelocity.y);
+    bd.bullet = b.bullet;
     bd.allowSleep = false;
     built.bodies.push_back(built.world->CreateBody(&bd));
   }

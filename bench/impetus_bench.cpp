@@ -7,7 +7,7 @@
 //   impetus-bench [--scene NAME]... [--steps N] [--threads N] [--substeps N] [--contact-hertz H]
 //                 [--engine both|impetus|box2d] [--box2d-continuous] [--json]
 //
-// NAME is a scene (large_pyramid, many_pyramids, tumbler, rain_1k, rain_10k, rain_100k, or
+// NAME is a scene (large_pyramid, many_pyramids, tumbler, smash, rain_1k, rain_10k, rain_100k, or
 // rain_N / rain_Nk for other counts), "rain" (the three rain sizes) or "all" (the default). Each
 // scene is built (not timed), then stepped N times (default: the scene's own count, 500 for the
 // pyramids) with a steady clock around the whole step loop: no warm-up, the pyramid's first
@@ -168,7 +168,7 @@ int main(int argc, char** argv) {
   bool json = false;
   bool peerContinuous = false;
   app.add_option("--scene", requested,
-                 "large_pyramid, many_pyramids, tumbler, rain_1k, rain_10k, rain_100k, rain (all three) or all")
+                 "large_pyramid, many_pyramids, tumbler, smash, rain_1k, rain_10k, rain_100k, rain (all three) or all")
       ->capture_default_str();
   app.add_option("--steps", stepsOverride, "steps of 1/60 s (default: the scene's own, 500 for the pyramids)")
       ->check(CLI::PositiveNumber);

@@ -17,7 +17,7 @@ namespace {
 using rigid2d::BodyType;
 
 std::uint32_t addBody(Rigid2dScene& scene, BodyType type, const Vec2f& position, float angularVelocity = 0.0f) {
-  scene.bodies.push_back({type, position, angularVelocity});
+  scene.bodies.push_back({type, position, angularVelocity, {}, false});
   return static_cast<std::uint32_t>(scene.bodies.size() - 1);
 }
 
@@ -166,8 +166,28 @@ Rigid2dScene tumblerScene(int grid) {
   return scene;
 }
 
+Rigid2dScene smashScene(int grid) {
+  Rigid2dScene scene;
+  scene.name = "smash";
+  scene.gravity = {};
+  constexpr float h = 0.1f;
+  const float half = static_cast<float>(grid) * h;
+  for (int i = 0; i < grid; ++i) {
+    for (int j = 0; j < grid; ++j) {
+      const Vec2f p{(static_cast<float>(2 * j) + 1.0f) * h, (static_cast<float>(2 * i) + 1.0f) * h - half};
+      addBox(scene, addBody(scene, BodyType::dynamicBody, p), h, h);
+    }
+  }
+  const std::uint32_t projectile = addBody(scene, BodyType::dynamicBody, {-12.0f, 0.0f});
+  scene.bodies[projectile].linearVelocity = {40.0f, 0.0f};
+  scene.bodies[projectile].bullet = true;
+  addBox(scene, projectile, 2.0f, 2.0f);
+  scene.defaultSteps = 300;
+  return scene;
+}
+
 std::vector<std::string> rigid2dSceneNames() {
-  return {"large_pyramid", "many_pyramids", "tumbler", "rain_1k", "rain_10k", "rain_100k"};
+  return {"large_pyramid", "many_pyramids", "tumbler", "smash", "rain_1k", "rain_10k", "rain_100k"};
 }
 
 Rigid2dScene makeRigid2dScene(std::string_view name) {
@@ -179,6 +199,9 @@ Rigid2dScene makeRigid2dScene(std::string_view name) {
   }
   if (name == "tumbler") {
     return tumblerScene();
+  }
+  if (name == "smash") {
+    return smashScene();
   }
   // rain_N or rain_Nk: N (thousand) circles.
   if (name.starts_with("rain_") && name.size() > 5) {
@@ -196,7 +219,7 @@ Rigid2dScene makeRigid2dScene(std::string_view name) {
   }
   throw Error("scene",
               "unknown 2D benchmark scene '" + std::string(name) +
-                  "' (large_pyramid, many_pyramids, tumbler, rain_N or rain_Nk: rain_1k, rain_10k, rain_100k)");
+                  "' (large_pyramid, many_pyramids, tumbler, smash, rain_N or rain_Nk: rain_1k, rain_10k, rain_100k)");
 }
 
 ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings& settings) {
@@ -204,7 +227,7 @@ ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings&
   def.taskRunner = settings.runner;
   def.substeps = settings.substeps;
   def.contactHertz = settings.contactHertz;
-  def.gravity = sceneGravity;
+  def.gravity = scene.gravity;
   def.enableSleep = false; // the benchmark times the solver, not the sleeping
   ImpetusScene built{rigid2d::World(def), {}};
   built.bodies.reserve(scene.bodies.size());
@@ -213,6 +236,8 @@ ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings&
     bd.type = b.type;
     bd.position = b.position;
     bd.angularVelocity = b.angularVelocity;
+    bd.linearVelocity = b.linearVelocity;
+    bd.bullet = b.bullet;
     built.bodies.push_back(built.world.createBody(bd));
   }
   rigid2d::ShapeDef sd;

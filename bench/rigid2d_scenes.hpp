@@ -3,7 +3,7 @@
 // boxes and circles), then built in an engine: here in Impetus' rigid2d::World, and in Box2D 2.4.1
 // by bench/box2d_scenes.hpp from the same description, so both engines get identical geometry.
 //
-// Every scene: gravity (0, -10) m/s^2, density 1 kg/m^2, friction 0.6, no restitution, sleeping
+// Every scene: gravity (0, -10) m/s^2 (the smash: none), density 1 kg/m^2, friction 0.6, no restitution, sleeping
 // off in both engines (what is timed is the solver at work), steps of 1/60 s.
 #pragma once
 
@@ -35,6 +35,8 @@ struct SceneBody {
   rigid2d::BodyType type = rigid2d::BodyType::staticBody;
   Vec2f position;               ///< body origin, m
   float angularVelocity = 0.0f; ///< rad/s (the tumbler's kinematic drum)
+  Vec2f linearVelocity;         ///< m/s (the smash's projectile)
+  bool bullet = false;          ///< continuous collision against dynamic bodies (the smash's projectile)
 };
 
 /// A scene as plain data: what both engines build.
@@ -44,7 +46,8 @@ struct Rigid2dScene {
   std::vector<SceneShape> shapes; ///< grouped by body, in body order
   /// Bodies whose sinking is the quality figure (the top box of each pyramid); may be empty.
   std::vector<std::uint32_t> tops;
-  int defaultSteps = 500; ///< steps of 1/60 s the benchmark runs by default
+  int defaultSteps = 500;      ///< steps of 1/60 s the benchmark runs by default
+  Vec2f gravity{0.0f, -10.0f}; ///< m/s^2 (zero for the smash)
 };
 
 inline constexpr float sceneTimeStep = 1.0f / 60.0f; ///< s
@@ -88,6 +91,12 @@ inline constexpr float rainColumnSpacing = 0.6f; ///< m
 inline constexpr int tumblerGrid = 45;
 inline constexpr float tumblerSpeed = 25.0f * 3.14159265358979f / 180.0f; ///< rad/s
 [[nodiscard]] Rigid2dScene tumblerScene(int grid = tumblerGrid);
+
+/// "smash" (after Box2D v3's): in zero gravity, a block of smashGrid x smashGrid boxes of
+/// half-size 0.1 m, touching, its left face at x = 0 and centred on y = 0, is hit at 40 m/s by a
+/// 4 x 4 m box of the same density (a bullet in both engines) starting 10 m to its left. 300 steps.
+inline constexpr int smashGrid = 60;
+[[nodiscard]] Rigid2dScene smashScene(int grid = smashGrid);
 
 /// Scene names, in the benchmark's order: large_pyramid, many_pyramids, tumbler, rain_1k,
 /// rain_10k, rain_100k.

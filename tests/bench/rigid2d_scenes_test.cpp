@@ -190,6 +190,44 @@ TEST(Tumbler, is_a_turning_kinematic_drum_holding_a_grid_of_small_boxes) {
   }
 }
 
+TEST(Smash, is_a_block_of_small_boxes_and_a_fast_big_box_in_zero_gravity) {
+  const bench::Rigid2dScene scene = bench::smashScene(20);
+  EXPECT_EQ(scene.name, "smash");
+  EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 20u * 20u + 1u);
+  EXPECT_FLOAT_EQ(scene.gravity.y, 0.0f);
+  EXPECT_FLOAT_EQ(scene.bodies.back().linearVelocity.x, 40.0f);
+  EXPECT_TRUE(scene.bodies.back().bullet);
+  std::vector<Transform2f> start;
+  for (const bench::SceneBody& b : scene.bodies) {
+    start.push_back({b.position, impetus::Rot2f::identity()});
+  }
+  EXPECT_LT(bench::largestOverlap(scene, start), 1.0e-5f);
+}
+
+// Nothing is static and there is no gravity: the smash conserves linear momentum (contact
+// impulses come in equal and opposite pairs), whatever the solver does with energy.
+TEST(Smash, built_in_impetus_conserves_momentum) {
+  const bench::Rigid2dScene scene = bench::smashScene(20);
+  bench::ImpetusScene built = bench::buildImpetusScene(scene);
+  const auto momentum = [&] {
+    impetus::Vec2d p;
+    for (impetus::rigid2d::BodyId b : built.bodies) {
+      const impetus::Vec2f v = built.world.linearVelocity(b) * built.world.mass(b);
+      p += impetus::Vec2d{v.x, v.y};
+    }
+    return p;
+  };
+  const impetus::Vec2d before = momentum(); // 16 kg at 40 m/s: 640 kg m/s
+  step(built, 120);
+  const impetus::Vec2d after = momentum();
+  ASSERT_TRUE(bench::allFinite(bench::bodyTransforms(built)));
+  // Float sums of impulses over 400 bodies and 120 steps: 1e-3 relative is generous.
+  EXPECT_NEAR(after.x, before.x, 1e-3 * before.x);
+  EXPECT_NEAR(after.y, 0.0, 1e-3 * before.x);
+  // The projectile gave momentum away: the block moves.
+  EXPECT_LT(built.world.linearVelocity(built.bodies.back()).x, 35.0f);
+}
+
 TEST(Scenes, are_found_by_name_and_an_unknown_name_is_an_error) {
   for (const std::string& name : bench::rigid2dSceneNames()) {
     EXPECT_EQ(bench::makeRigid2dScene(name).name, name);
