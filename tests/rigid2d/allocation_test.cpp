@@ -21,8 +21,13 @@ void* operator new(std::size_t size) {
   }
   throw std::bad_alloc();
 }
+// This replaces the global new and delete as a pair (malloc and free), which GCC cannot see
+// when it inlines a test's `new` next to this `delete`.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
 
 namespace impetus::rigid2d {
 namespace {

@@ -37,7 +37,12 @@ template <Real T> [[nodiscard]] constexpr Rot2<T> invMul(const Rot2<T>& a, const
 }
 /// Rescales (c, s) to unit length after integration has drifted it; identity when degenerate.
 template <Real T> [[nodiscard]] Rot2<T> normalize(const Rot2<T>& q) noexcept {
-  const T len = std::hypot(q.c, q.s);
+  // sqrt, not hypot: this runs for every body every substep, and hypot is a slow library call;
+  // only a (c, s) beyond ~1e19 (float) overflows the squares, and then hypot takes over.
+  T len = std::sqrt(q.c * q.c + q.s * q.s);
+  if (std::isinf(len)) {
+    len = std::hypot(q.c, q.s);
+  }
   if (len <= normalizeTolerance<T>) {
     return Rot2<T>::identity();
   }
