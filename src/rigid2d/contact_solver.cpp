@@ -9,6 +9,7 @@
 // find no free colour (a body touching very many others) go to a small overflow list solved one
 // by one first. Within a colour, contacts keep their pool order, so the whole solve has a fixed
 // order and is bit-identical run after run.
+#include "rigid2d/joints.hpp"
 #include "rigid2d/simd.hpp"
 #include "rigid2d/world_impl.hpp"
 
@@ -26,26 +27,6 @@ constexpr int colourCount = 24;
 /// (Box2D v3 keeps static contacts out of colour 0; here that delayed the ground's support of a
 /// stack by a colour each substep and let a 10-box stack sway 2 cm, against 0.5 cm.)
 constexpr int dynamicColourCount = colourCount - 4;
-
-/// Soft constraint coefficients for a spring of `hertz` and damping ratio `zeta` over a
-/// substep h: the bias rate (1/s) that turns a position error into a velocity target, and the
-/// mass and impulse scales that make the constraint a spring-damper instead of rigid.
-struct Softness {
-  float biasRate = 0.0f;
-  float massScale = 1.0f;
-  float impulseScale = 0.0f;
-};
-
-Softness makeSoft(float hertz, float zeta, float h) {
-  if (hertz == 0.0f) {
-    return {};
-  }
-  const float omega = 2.0f * pi<float> * hertz;
-  const float a1 = 2.0f * zeta + h * omega;
-  const float a2 = h * omega * a1;
-  const float a3 = 1.0f / (1.0f + a2);
-  return {omega / a1, a2 * a3, a3};
-}
 
 struct ConstraintPoint {
   Vec2f rA, rB; ///< anchors relative to the centres of mass, world axes, m

@@ -1,4 +1,5 @@
 // Islands and sleeping.
+#include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
 
 #include <algorithm>
@@ -17,8 +18,21 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
 
 } // namespace
 
-/// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).
+/// A sleeping body touched by a moving one, or joined to one, wakes up (before the solve, so it
+/// takes part).
 void wakeTouched(WorldState& w) {
+  for (const Joint& joint : w.joints) {
+    if (!joint.alive) {
+      continue;
+    }
+    Body& a = w.bodies[joint.bodyA];
+    Body& b = w.bodies[joint.bodyB];
+    if (a.moving() && b.alive && b.type != BodyType::staticBody && !b.awake) {
+      b.wake();
+    } else if (b.moving() && a.alive && a.type != BodyType::staticBody && !a.awake) {
+      a.wake();
+    }
+  }
   for (const Contact& contact : w.contacts) {
     if (!contact.alive || contact.sensor || contact.manifold.pointCount == 0) {
       continue;
@@ -34,8 +48,8 @@ void wakeTouched(WorldState& w) {
 }
 
 /// Accumulates rest time and puts islands to sleep whose every body has rested long enough.
-/// Islands are the connected sets of moving bodies joined by touching contacts (static bodies
-/// do not join islands), found by union-find each step.
+/// Islands are the connected sets of moving bodies joined by touching contacts and joints (static
+/// bodies do not join islands), found by union-find each step.
 void updateSleep(WorldState& w, float dt) {
   const WorldDef& d = w.def;
   for (Body& b : w.bodies) {
@@ -60,6 +74,16 @@ void updateSleep(WorldState& w, float dt) {
     const std::uint32_t rb = findRoot(parent, contact.bodyB);
     if (ra != rb) {
       parent[std::max(ra, rb)] = std::min(ra, rb); // deterministic: the lower slot is the root
+    }
+  }
+  for (const Joint& joint : w.joints) {
+    if (!joint.alive || !w.bodies[joint.bodyA].moving() || !w.bodies[joint.bodyB].moving()) {
+      continue;
+    }
+    const std::uint32_t ra = findRoot(parent, joint.bodyA);
+    const std::uint32_t rb = findRoot(parent, joint.bodyB);
+    if (ra != rb) {
+      parent[std::max(ra, rb)] = std::min(ra, rb);
     }
   }
   // The least rest time of each island, at its root.

@@ -5,6 +5,7 @@
 // solve them with bias (soft constraints that push overlap apart at a bounded speed), integrate
 // positions (as deltas), and relax (solve again without bias, taking back the velocity the bias
 // added). Restitution is applied once at the end, and the impulses are stored for the next step.
+#include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
 
 #include <impetus/math/scalar.hpp>
@@ -102,17 +103,25 @@ void solve(WorldState& w, float dt) {
   context.substeps = w.def.substeps;
   context.h = dt / static_cast<float>(context.substeps);
   context.inverseH = 1.0f / context.h;
+  // Joints are held at their own stiffness, capped like the contacts' by the substep rate.
+  context.jointSoftness =
+      makeSoft(std::min(w.def.jointHertz, 0.25f * context.inverseH), w.def.jointDampingRatio, context.h);
   buildSolverBodies(w);
+  prepareJoints(w, context);
   prepareContacts(w, context);
   for (int substep = 0; substep < context.substeps; ++substep) {
     integrateVelocities(w, context);
+    warmStartJoints(w);
     warmStartContacts(w);
+    solveJoints(w, context, true);
     solveContacts(w, context, true);
     integratePositions(w, context);
-    solveContacts(w, context, false); // relax
+    solveJoints(w, context, false); // relax
+    solveContacts(w, context, false);
   }
   applyRestitution(w);
   storeImpulses(w);
+  finishJoints(w, context);
 }
 
 } // namespace impetus::rigid2d::detail

@@ -1,4 +1,5 @@
 // The 2D world: bodies, shapes, the broadphase, the narrowphase and the step's order.
+#include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
 
 #include <impetus/error.hpp>
@@ -222,7 +223,7 @@ void updatePairs(WorldState& w) {
       if (ba.type != BodyType::dynamicBody && bb.type != BodyType::dynamicBody) {
         return true;
       }
-      if (!shouldCollide(s.filter, o.filter)) {
+      if (!shouldCollide(s.filter, o.filter) || w.jointBlocksCollision(s.body, o.body)) {
         return true;
       }
       w.newPairs.push_back(pairKey(slot, other));
@@ -376,6 +377,9 @@ BodyId World::createBody(const BodyDef& def) {
 void World::destroyBody(BodyId id) {
   Impl& w = *impl_;
   Body& b = w.body(id);
+  while (!b.joints.empty()) {
+    destroyJoint(w.joints[b.joints.back()].id);
+  }
   const std::uint32_t bodySlot = id.index;
   for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
     const Contact& c = w.contacts[slot];
@@ -563,6 +567,7 @@ void World::step(float dt) {
   take(w.contactEvents.hits, w.pendingEvents.hits);
   take(w.sensorEvents.begins, w.pendingSensorEvents.begins);
   take(w.sensorEvents.ends, w.pendingSensorEvents.ends);
+  w.jointEvents.breaks.clear();
   updatePairs(w);
   collideContacts(w);
   detail::wakeTouched(w);

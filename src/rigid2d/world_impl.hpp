@@ -8,6 +8,7 @@
 #include <impetus/rigid2d/chain.hpp>
 #include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/dynamic_tree.hpp>
+#include <impetus/rigid2d/joint.hpp>
 #include <impetus/rigid2d/manifold.hpp>
 #include <impetus/rigid2d/world.hpp>
 
@@ -66,6 +67,7 @@ struct Body {
   float sleepTime = 0.0f;            ///< s spent slower than the sleep tolerances
   std::uint32_t solverIndex = 0;     ///< this step's index into the solver arrays (moving bodies)
   std::vector<std::uint32_t> shapes; ///< shape slots
+  std::vector<std::uint32_t> joints; ///< joint slots of the joints attached to this body
   std::uint64_t userData = 0;
   BodyId id;
   bool alive = false;
@@ -119,6 +121,7 @@ struct BodySim {
 };
 
 struct ContactSolverData; // contact_solver.cpp
+struct Joint;             // joints.hpp
 
 /// Where a bullet started the step, for its sweep.
 struct BulletStart {
@@ -150,6 +153,11 @@ struct WorldState {
   std::vector<Contact> contacts;
   std::vector<std::uint32_t> freeContacts;
   std::unordered_map<std::uint64_t, std::uint32_t> contactByPair; ///< (shapeA << 32 | shapeB) -> slot
+
+  IdPool jointIds;
+  std::vector<Joint> joints; ///< by id slot
+  JointEvents jointEvents;
+  float lastInverseH = 0.0f;              ///< the last step's substep rate, 1/s (impulses to forces)
   std::vector<std::uint8_t> touchChanges; ///< scratch of the collide pass: 1 began, 2 ended touching
 
   /// This step's moving bodies in solver order, their solver state (plus one last, never
@@ -169,6 +177,10 @@ struct WorldState {
 
   Body& body(BodyId id);
   [[nodiscard]] const Body& body(BodyId id) const;
+  Joint& joint(JointId id);
+  [[nodiscard]] const Joint& joint(JointId id) const;
+  /// Whether a joint between the two bodies (slots) turns their collision off.
+  [[nodiscard]] bool jointBlocksCollision(std::uint32_t bodyA, std::uint32_t bodyB) const;
   [[nodiscard]] DynamicTree& treeOf(const Shape& s) { return s.inStaticTree ? staticTree : movingTree; }
   /// The solver index standing for static bodies (a state that stays at rest).
   [[nodiscard]] std::uint32_t staticIndex() const noexcept { return static_cast<std::uint32_t>(awakeBodies.size()); }
@@ -176,12 +188,34 @@ struct WorldState {
   void parallelFor(std::uint32_t count, std::uint32_t minRange, const TaskRunner::RangeTask& task) const;
 };
 
+/// Soft constraint coefficients for a spring of `hertz` and damping ratio `zeta` over a
+/// substep h (Erin Catto, "Solver2D" soft step): the bias rate (1/s) that turns a position
+/// error into a velocity target, and the mass and impulse scales that make the constraint a
+/// spring-damper solved implicitly instead of rigid. Zero hertz: rigid (no bias, full mass).
+struct Softness {
+  float biasRate = 0.0f;
+  float massScale = 1.0f;
+  float impulseScale = 0.0f;
+};
+
+[[nodiscard]] inline Softness makeSoft(float hertz, float zeta, float h) {
+  if (hertz == 0.0f) {
+    return {};
+  }
+  const float omega = 2.0f * 3.14159265358979f * hertz;
+  const float a1 = 2.0f * zeta + h * omega;
+  const float a2 = h * omega * a1;
+  const float a3 = 1.0f / (1.0f + a2);
+  return {omega / a1, a2 * a3, a3};
+}
+
 /// The constants of one step's solve.
 struct StepContext {
   float dt = 0.0f;
   float h = 0.0f;        ///< substep, s
   float inverseH = 0.0f; ///< 1/s
   int substeps = 1;
+  Softness jointSoftness; ///< the stiffness that holds joints together (jointHertz, jointDampingRatio)
 };
 
 /// Whether two shapes' filters let them collide: A and B collide when each one's category is in

@@ -71,7 +71,11 @@ struct WorldDef {
   int substeps = 4;           ///< solver substeps per step (soft step)
   float contactHertz = 30.0f; ///< contact stiffness, Hz (capped at a quarter of the substep rate)
   float contactDampingRatio = 10.0f;
-  float maxContactPushSpeed = 3.0f;     ///< m/s: how fast overlap is resolved
+  float maxContactPushSpeed = 3.0f; ///< m/s: how fast overlap is resolved
+  /// Joint stiffness, Hz (capped at a quarter of the substep rate): how firmly a joint pulled
+  /// apart is brought back together, and its damping ratio.
+  float jointHertz = 60.0f;
+  float jointDampingRatio = 2.0f;
   float restitutionThreshold = 1.0f;    ///< m/s: slower impacts do not bounce
   float maxLinearSpeed = 400.0f;        ///< m/s
   float hitEventThreshold = 1.0f;       ///< m/s: impacts at least this fast raise a hit event

@@ -18,6 +18,7 @@
 #include <impetus/rigid2d/chain.hpp>
 #include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/geometry.hpp>
+#include <impetus/rigid2d/joint.hpp>
 #include <impetus/rigid2d/types.hpp>
 
 #include <functional>
@@ -94,6 +95,44 @@ public:
   std::vector<ShapeId> createChain(BodyId body, const ShapeDef& def, const ChainDef& chain);
   [[nodiscard]] std::size_t shapeCount() const noexcept;
   [[nodiscard]] std::size_t contactCount() const noexcept; ///< touching contacts
+
+  // Joints (joint.hpp). Both bodies must exist; a joint keeps both awake together and, unless
+  // collideConnected, stops them colliding. Destroying a body destroys its joints.
+  JointId createJoint(const RevoluteJointDef& def);
+  JointId createJoint(const PrismaticJointDef& def);
+  JointId createJoint(const DistanceJointDef& def);
+  JointId createJoint(const WeldJointDef& def);
+  JointId createJoint(const WheelJointDef& def);
+  JointId createJoint(const MotorJointDef& def);
+  JointId createJoint(const MouseJointDef& def);
+  void destroyJoint(JointId id);
+  [[nodiscard]] bool isValid(JointId id) const noexcept;
+  [[nodiscard]] std::size_t jointCount() const noexcept;
+  [[nodiscard]] JointType jointType(JointId id) const;
+  [[nodiscard]] BodyId jointBodyA(JointId id) const;
+  [[nodiscard]] BodyId jointBodyB(JointId id) const;
+  /// The force (N) and torque (N m) the joint applied to body B over the last step.
+  [[nodiscard]] Vec2f jointReactionForce(JointId id) const;
+  [[nodiscard]] float jointReactionTorque(JointId id) const;
+  /// Joint angle (angleB - angleA - referenceAngle, in (-pi, pi]) and motor torque (N m).
+  [[nodiscard]] float revoluteAngle(JointId id) const;
+  [[nodiscard]] float revoluteMotorTorque(JointId id) const;
+  void setRevoluteMotor(JointId id, bool enable, float speed, float maxTorque);
+  void setRevoluteLimit(JointId id, bool enable, float lowerAngle, float upperAngle);
+  /// Translation of anchor B from anchor A along the axis (m) and motor force (N).
+  [[nodiscard]] float prismaticTranslation(JointId id) const;
+  [[nodiscard]] float prismaticMotorForce(JointId id) const;
+  void setPrismaticMotor(JointId id, bool enable, float speed, float maxForce);
+  void setPrismaticLimit(JointId id, bool enable, float lowerTranslation, float upperTranslation);
+  /// The anchors' distance now (m); the rest length.
+  [[nodiscard]] float distanceJointLength(JointId id) const;
+  void setDistanceJointLength(JointId id, float length);
+  [[nodiscard]] float wheelMotorTorque(JointId id) const;
+  void setWheelMotor(JointId id, bool enable, float speed, float maxTorque);
+  void setMotorJointTarget(JointId id, const Vec2f& linearOffset, float angularOffset);
+  void setMouseTarget(JointId id, const Vec2f& target);
+  /// Joints whose reaction crossed their break limits in the last step.
+  [[nodiscard]] const JointEvents& jointEvents() const noexcept;
 
   // Body state.
   [[nodiscard]] Transform2f transform(BodyId id) const;

@@ -1,0 +1,77 @@
+// The joints' part of the step: the common frame of each joint, then its type's prepare, warm
+// start and solve, in joint slot order (a fixed order: results are deterministic), and after
+// the substeps the reaction readouts and break events.
+#include "rigid2d/joints.hpp"
+
+#include <cmath>
+
+namespace impetus::rigid2d::detail {
+
+void prepareJoints(WorldState& w, const StepContext& context) {
+  const std::uint32_t staticIndex = w.staticIndex();
+  for (Joint& joint : w.joints) {
+    joint.solved = false;
+    if (!joint.alive) {
+      continue;
+    }
+    const Body& a = w.bodies[joint.bodyA];
+    const Body& b = w.bodies[joint.bodyB];
+    if (!a.moving() && !b.moving()) {
+      continue; // asleep or static (a sleeper joined to a moving body is woken before the solve)
+    }
+    JointFrame& f = joint.frame;
+    // A joint to the world (the mouse joint: bodyA is bodyB) sees a static body A.
+    const bool aMoves = a.moving() && joint.bodyA != joint.bodyB;
+    f.indexA = aMoves ? a.solverIndex : staticIndex;
+    f.indexB = b.moving() ? b.solverIndex : staticIndex;
+    f.mA = aMoves ? a.inverseMass : 0.0f;
+    f.mB = b.moving() ? b.inverseMass : 0.0f;
+    f.iA = aMoves ? a.inverseInertia : 0.0f;
+    f.iB = b.moving() ? b.inverseInertia : 0.0f;
+    f.frameA = rotate(a.transform.q, joint.localAnchorA - a.localCenter);
+    f.frameB = rotate(b.transform.q, joint.localAnchorB - b.localCenter);
+    f.deltaCenter = b.center - a.center;
+    f.deltaAngle = relativeAngle(b.transform.q, a.transform.q);
+    std::visit([&](auto& data) { prepareJoint(data, f, context); }, joint.data);
+    joint.solved = true;
+  }
+}
+
+void warmStartJoints(WorldState& w) {
+  const std::uint32_t staticIndex = w.staticIndex();
+  for (Joint& joint : w.joints) {
+    if (joint.solved) {
+      std::visit([&](auto& data) { warmStartJoint(data, joint.frame, w.states, staticIndex); }, joint.data);
+    }
+  }
+}
+
+void solveJoints(WorldState& w, const StepContext& context, bool useBias) {
+  const std::uint32_t staticIndex = w.staticIndex();
+  for (Joint& joint : w.joints) {
+    if (joint.solved) {
+      std::visit([&](auto& data) { solveJoint(data, joint.frame, w.states, staticIndex, context, useBias); },
+                 joint.data);
+    }
+  }
+}
+
+void finishJoints(WorldState& w, const StepContext& context) {
+  w.lastInverseH = context.inverseH;
+  for (Joint& joint : w.joints) {
+    if (!joint.solved) {
+      continue; // asleep: it still carries what it carried when it fell asleep
+    }
+    joint.reaction =
+        std::visit([&](const auto& data) { return jointReaction(data, joint.frame, context.inverseH); }, joint.data);
+    const float force = length(joint.reaction.force);
+    const float torque = std::abs(joint.reaction.torque);
+    const bool over = force > joint.breakForce || torque > joint.breakTorque;
+    if (over && !joint.overBreakLimit) {
+      w.jointEvents.breaks.push_back({joint.id, force, torque});
+    }
+    joint.overBreakLimit = over;
+  }
+}
+
+} // namespace impetus::rigid2d::detail

@@ -1,0 +1,84 @@
+// Joints inside the solver: the common part of every joint (bodies, anchors, the solver's
+// per-step frames) and the per-type parts, one file per type (revolute_joint.cpp, ...). Each
+// type provides prepare, warm start, solve (with or without bias, like the contacts) and its
+// reaction, and is called in joint order, before the contacts of each stage (joints are few and
+// hold structures together: solving them first lets the contacts see their result).
+#pragma once
+
+#include "rigid2d/world_impl.hpp"
+
+#include <impetus/rigid2d/joint.hpp>
+
+#include <cmath>
+#include <variant>
+
+namespace impetus::rigid2d::detail {
+
+/// A joint's force and torque on body B (N, N m).
+struct JointReaction {
+  Vec2f force;
+  float torque = 0.0f;
+};
+
+/// The solver's view of a joint for one step, shared by every type.
+struct JointFrame {
+  std::uint32_t indexA = 0, indexB = 0; ///< solver indices (the static index for static bodies)
+  float mA = 0.0f, mB = 0.0f;           ///< inverse masses, 1/kg
+  float iA = 0.0f, iB = 0.0f;           ///< inverse rotational inertias, 1/(kg m^2)
+  Vec2f frameA, frameB;                 ///< anchors relative to the centres of mass, world axes, at the step's start, m
+  Vec2f deltaCenter;                    ///< cB - cA at the step's start, m
+  float deltaAngle = 0.0f;              ///< angleB - angleA at the step's start (in (-pi, pi]), rad
+};
+
+/// The angle of qB relative to qA, in (-pi, pi].
+[[nodiscard]] inline float relativeAngle(const Rot2f& qB, const Rot2f& qA) {
+  const Rot2f q = invMul(qA, qB);
+  return std::atan2(q.s, q.c);
+}
+
+/// An angle wrapped into (-pi, pi].
+[[nodiscard]] inline float unwindAngle(float a) {
+  constexpr float pi = 3.14159265358979f;
+  if (a < -pi) {
+    return a + 2.0f * pi;
+  }
+  if (a > pi) {
+    return a - 2.0f * pi;
+  }
+  return a;
+}
+
+/// The anchors now: the step's frames turned by each body's rotation so far this step.
+[[nodiscard]] inline Vec2f currentAnchor(const BodyState& s, const Vec2f& frame) { return rotate(s.dq, frame); }
+
+/// Writes a body's new velocities back unless it is the static state.
+inline void storeVelocity(std::vector<BodyState>& states, std::uint32_t index, std::uint32_t staticIndex,
+                          const BodyState& s) {
+  if (index != staticIndex) {
+    states[index].v = s.v;
+    states[index].w = s.w;
+  }
+}
+
+/// The effective mass matrix of a point constraint at anchors rA, rB (the 2x2 K with
+/// K v = relative velocity change per unit impulse).
+[[nodiscard]] inline Mat22f pointMass(const JointFrame& f, const Vec2f& rA, const Vec2f& rB) {
+  const float m = f.mA + f.mB;
+  const float k11 = m + f.iA * rA.y * rA.y + f.iB * rB.y * rB.y;
+  const float k12 = -f.iA * rA.x * rA.y - f.iB * rB.x * rB.y;
+  const float k22 = m + f.iA * rA.x * rA.x + f.iB * rB.x * rB.x;
+  return {k11, k12, k12, k22};
+}
+
+/// Solves K x = b for a 2x2 K; zero when K is singular (two immovable bodies).
+[[nodiscard]] inline Vec2f solve22(const Mat22f& k, const Vec2f& b) {
+  const float a11 = k.cx.x, a12 = k.cy.x, a21 = k.cx.y, a22 = k.cy.y;
+  const float det = a11 * a22 - a12 * a21;
+  if (det == 0.0f) {
+    return {};
+  }
+  const float inv = 1.0f / det;
+  return {inv * (a22 * b.x - a12 * b.y), inv * (a11 * b.y - a21 * b.x)};
+}
+
+} // namespace impetus::rigid2d::detail

@@ -1,0 +1,46 @@
+// A joint of the 2D world: the common part and one of the per-type parts.
+#pragma once
+
+#include "rigid2d/distance_joint.hpp"
+#include "rigid2d/motor_joint.hpp"
+#include "rigid2d/mouse_joint.hpp"
+#include "rigid2d/prismatic_joint.hpp"
+#include "rigid2d/revolute_joint.hpp"
+#include "rigid2d/weld_joint.hpp"
+#include "rigid2d/wheel_joint.hpp"
+
+#include <variant>
+
+namespace impetus::rigid2d::detail {
+
+using JointData =
+    std::variant<RevoluteJoint, PrismaticJoint, DistanceJoint, WeldJoint, WheelJoint, MotorJoint, MouseJoint>;
+
+struct Joint {
+  JointData data;
+  std::uint32_t bodyA = 0; ///< body slots
+  std::uint32_t bodyB = 0;
+  Vec2f localAnchorA; ///< m, body A's frame (relative to its origin)
+  Vec2f localAnchorB;
+  bool collideConnected = false;
+  float breakForce = 0.0f;     ///< N
+  float breakTorque = 0.0f;    ///< N m
+  bool overBreakLimit = false; ///< the break event has been raised and the reaction is still above
+  std::uint64_t userData = 0;
+  JointId id;
+  bool alive = false;
+  JointFrame frame;       ///< this step's solver view (valid while solved)
+  JointReaction reaction; ///< over the last step, N and N m
+  bool solved = false;    ///< taken part in this step's solve (a moving body)
+
+  [[nodiscard]] JointType type() const noexcept { return static_cast<JointType>(data.index()); }
+};
+
+// joint.cpp: the joints' part of the step, in joint slot order.
+void prepareJoints(WorldState& w, const StepContext& context);
+void warmStartJoints(WorldState& w);
+void solveJoints(WorldState& w, const StepContext& context, bool useBias);
+/// Reaction readouts and break events, after the substeps.
+void finishJoints(WorldState& w, const StepContext& context);
+
+} // namespace impetus::rigid2d::detail

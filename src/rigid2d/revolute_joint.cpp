@@ -1,0 +1,150 @@
+// The revolute joint in the soft step (after Box2D v3's revolute joint).
+//
+// Point constraint: C = (cB + rB) - (cA + rA) = 0, two rows solved as a block with the 2x2
+// effective mass K; with bias it is soft at the world's joint stiffness, so a joint pulled apart
+// returns without overshoot. Angular rows act on the relative spin wB - wA with the axial mass
+// 1 / (1/IA + 1/IB): a torsional spring (soft, toward joint angle 0), a motor (toward motorSpeed,
+// clamped to maxMotorTorque h per substep), friction (toward zero relative spin, clamped to
+// frictionTorque h) and the two one-sided limits (speculative when inside, soft when violated).
+#include "rigid2d/revolute_joint.hpp"
+
+#include <algorithm>
+
+namespace impetus::rigid2d::detail {
+namespace {
+
+/// The joint angle now: at the step's start plus what the bodies turned since.
+float jointAngle(const JointFrame& f, const BodyState& a, const BodyState& b) {
+  return unwindAngle(f.deltaAngle + relativeAngle(b.dq, a.dq));
+}
+
+/// An angular impulse on the relative spin: -impulse on A, +impulse on B.
+void applyAngular(BodyState& a, BodyState& b, const JointFrame& f, float impulse) {
+  a.w -= f.iA * impulse;
+  b.w += f.iB * impulse;
+}
+
+/// A one-sided angular limit: keeps C >= 0 with accumulated impulse >= 0, where C and its rate
+/// have the sign of `direction` (+1: lower limit, C = angle - lower; -1: upper, C = upper - angle).
+void solveLimit(float& accumulated, float c, float direction, BodyState& a, BodyState& b, const JointFrame& f,
+                float axialMass, const StepContext& context, bool useBias) {
+  float bias = 0.0f;
+  float massScale = 1.0f;
+  float impulseScale = 0.0f;
+  if (c > 0.0f) {
+    bias = c * context.inverseH; // speculative: may close the gap this substep, no more
+  } else if (useBias) {
+    bias = context.jointSoftness.biasRate * c;
+    massScale = context.jointSoftness.massScale;
+    impulseScale = context.jointSoftness.impulseScale;
+  }
+  const float cdot = direction * (b.w - a.w);
+  const float impulse = -axialMass * massScale * (cdot + bias) - impulseScale * accumulated;
+  const float total = std::max(accumulated + impulse, 0.0f);
+  applyAngular(a, b, f, direction * (total - accumulated));
+  accumulated = total;
+}
+
+} // namespace
+
+void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepContext& context) {
+  const float k = frame.iA + frame.iB;
+  joint.axialMass = k > 0.0f ? 1.0f / k : 0.0f;
+  joint.springSoftness = makeSoft(joint.def.hertz, joint.def.dampingRatio, context.h);
+  // What is switched off holds no impulse (it would be warm started otherwise).
+  if (!joint.def.enableSpring) {
+    joint.springImpulse = 0.0f;
+  }
+  if (!joint.def.enableMotor) {
+    joint.motorImpulse = 0.0f;
+  }
+  if (!joint.def.enableLimit) {
+    joint.lowerImpulse = joint.upperImpulse = 0.0f;
+  }
+  if (joint.def.frictionTorque == 0.0f) {
+    joint.frictionImpulse = 0.0f;
+  }
+}
+
+void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                    std::uint32_t staticIndex) {
+  BodyState a = states[frame.indexA];
+  BodyState b = states[frame.indexB];
+  const Vec2f rA = currentAnchor(a, frame.frameA);
+  const Vec2f rB = currentAnchor(b, frame.frameB);
+  const float axial =
+      joint.springImpulse + joint.motorImpulse + joint.frictionImpulse + joint.lowerImpulse - joint.upperImpulse;
+  const Vec2f p = joint.linearImpulse;
+  a.v -= p * frame.mA;
+  a.w -= frame.iA * (cross(rA, p) + axial);
+  b.v += p * frame.mB;
+  b.w += frame.iB * (cross(rB, p) + axial);
+  storeVelocity(states, frame.indexA, staticIndex, a);
+  storeVelocity(states, frame.indexB, staticIndex, b);
+}
+
+void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                std::uint32_t staticIndex, const StepContext& context, bool useBias) {
+  BodyState a = states[frame.indexA];
+  BodyState b = states[frame.indexB];
+  const RevoluteJointDef& def = joint.def;
+  const bool canTurn = joint.axialMass > 0.0f;
+
+  if (def.enableSpring && canTurn) {
+    const float c = jointAngle(frame, a, b);
+    const Softness& soft = joint.springSoftness;
+    const float impulse =
+        -soft.massScale * joint.axialMass * (b.w - a.w + soft.biasRate * c) - soft.impulseScale * joint.springImpulse;
+    joint.springImpulse += impulse;
+    applyAngular(a, b, frame, impulse);
+  }
+  if (def.enableMotor && canTurn) {
+    const float maxImpulse = context.h * def.maxMotorTorque;
+    const float old = joint.motorImpulse;
+    joint.motorImpulse = std::clamp(old - joint.axialMass * (b.w - a.w - def.motorSpeed), -maxImpulse, maxImpulse);
+    applyAngular(a, b, frame, joint.motorImpulse - old);
+  }
+  if (def.frictionTorque > 0.0f && canTurn) {
+    const float maxImpulse = context.h * def.frictionTorque;
+    const float old = joint.frictionImpulse;
+    joint.frictionImpulse = std::clamp(old - joint.axialMass * (b.w - a.w), -maxImpulse, maxImpulse);
+    applyAngular(a, b, frame, joint.frictionImpulse - old);
+  }
+  if (def.enableLimit && canTurn) {
+    const float angle = jointAngle(frame, a, b);
+    solveLimit(joint.lowerImpulse, angle - def.lowerAngle, 1.0f, a, b, frame, joint.axialMass, context, useBias);
+    solveLimit(joint.upperImpulse, def.upperAngle - angle, -1.0f, a, b, frame, joint.axialMass, context, useBias);
+  }
+
+  // The point constraint, last: it matters most.
+  const Vec2f rA = currentAnchor(a, frame.frameA);
+  const Vec2f rB = currentAnchor(b, frame.frameB);
+  const Vec2f cdot = (b.v + cross(b.w, rB)) - (a.v + cross(a.w, rA));
+  Vec2f bias;
+  float massScale = 1.0f;
+  float impulseScale = 0.0f;
+  if (useBias) {
+    const Vec2f separation = (b.dp - a.dp) + (rB - rA) + frame.deltaCenter;
+    bias = separation * context.jointSoftness.biasRate;
+    massScale = context.jointSoftness.massScale;
+    impulseScale = context.jointSoftness.impulseScale;
+  }
+  const Vec2f solved = solve22(pointMass(frame, rA, rB), cdot + bias);
+  const Vec2f impulse = solved * -massScale - joint.linearImpulse * impulseScale;
+  joint.linearImpulse += impulse;
+  a.v -= impulse * frame.mA;
+  a.w -= frame.iA * cross(rA, impulse);
+  b.v += impulse * frame.mB;
+  b.w += frame.iB * cross(rB, impulse);
+
+  storeVelocity(states, frame.indexA, staticIndex, a);
+  storeVelocity(states, frame.indexB, staticIndex, b);
+}
+
+JointReaction jointReaction(const RevoluteJoint& joint, const JointFrame&, float inverseH) {
+  const float axial =
+      joint.springImpulse + joint.motorImpulse + joint.frictionImpulse + joint.lowerImpulse - joint.upperImpulse;
+  return {joint.linearImpulse * inverseH, axial * inverseH};
+}
+
+} // namespace impetus::rigid2d::detail

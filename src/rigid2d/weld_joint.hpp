@@ -1,0 +1,28 @@
+// Two bodies glued at their anchors and relative angle, rigidly or softly.
+// The solver's side (weld_joint.cpp); the definition is WeldJointDef in <impetus/rigid2d/joint.hpp>.
+#pragma once
+
+#include "rigid2d/joint_solver.hpp"
+
+namespace impetus::rigid2d::detail {
+
+struct WeldJoint {
+  WeldJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  // Accumulated impulses: solver state, kept from step to step for warm starting.
+  Vec2f linearImpulse;         ///< N s per substep
+  float angularImpulse = 0.0f; ///< N m s per substep
+  // This step's constants.
+  float axialMass = 0.0f;
+  Softness linearSoftness;
+  Softness angularSoftness;
+};
+
+void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& context);
+void warmStartJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                    std::uint32_t staticIndex);
+void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
+                const StepContext& context, bool useBias);
+/// The force and torque on body B over the last substep (impulses times the substep rate).
+[[nodiscard]] JointReaction jointReaction(const WeldJoint& joint, const JointFrame& frame, float inverseH);
+
+} // namespace impetus::rigid2d::detail

@@ -1,0 +1,33 @@
+// A vehicle wheel: a suspension spring along an axis of the chassis, free spin, a drive motor.
+// The solver's side (wheel_joint.cpp); the definition is WheelJointDef in <impetus/rigid2d/joint.hpp>.
+#pragma once
+
+#include "rigid2d/joint_solver.hpp"
+
+namespace impetus::rigid2d::detail {
+
+struct WheelJoint {
+  WheelJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  // Accumulated impulses: solver state, kept from step to step for warm starting.
+  float perpImpulse = 0.0f;   ///< across the axis, N s per substep
+  float springImpulse = 0.0f; ///< along the axis
+  float motorImpulse = 0.0f;  ///< N m s per substep
+  float lowerImpulse = 0.0f;
+  float upperImpulse = 0.0f;
+  // This step's constants.
+  Vec2f axisA; ///< the axis in world axes at the step's start
+  float perpMass = 0.0f;
+  float axialMass = 0.0f;
+  float motorMass = 0.0f;
+  Softness springSoftness;
+};
+
+void prepareJoint(WheelJoint& joint, const JointFrame& frame, const StepContext& context);
+void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                    std::uint32_t staticIndex);
+void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
+                const StepContext& context, bool useBias);
+/// The force and torque on body B over the last substep (impulses times the substep rate).
+[[nodiscard]] JointReaction jointReaction(const WheelJoint& joint, const JointFrame& frame, float inverseH);
+
+} // namespace impetus::rigid2d::detail

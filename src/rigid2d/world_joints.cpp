@@ -1,0 +1,377 @@
+// The world's joint API: creating and destroying joints, their readouts and run-time controls.
+#include "rigid2d/joints.hpp"
+
+#include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace impetus::rigid2d {
+
+using detail::Joint;
+using detail::WorldState;
+
+namespace detail {
+
+Joint& WorldState::joint(JointId id) {
+  if (!jointIds.isValidId(id)) {
+    throwInvalid("joint id", static_cast<double>(id.index), "joint does not exist (destroyed or never created)");
+  }
+  return joints[id.index];
+}
+
+const Joint& WorldState::joint(JointId id) const { return const_cast<WorldState*>(this)->joint(id); }
+
+bool WorldState::jointBlocksCollision(std::uint32_t bodyA, std::uint32_t bodyB) const {
+  const Body& a = bodies[bodyA];
+  const Body& b = bodies[bodyB];
+  const Body& fewer = a.joints.size() <= b.joints.size() ? a : b;
+  const std::uint32_t other = &fewer == &a ? bodyB : bodyA;
+  return std::any_of(fewer.joints.begin(), fewer.joints.end(), [&](std::uint32_t slot) {
+    const Joint& j = joints[slot];
+    return !j.collideConnected && (j.bodyA == other || j.bodyB == other);
+  });
+}
+
+} // namespace detail
+
+namespace {
+
+/// A valid body of the joint, or an error naming the field.
+std::uint32_t jointBody(WorldState& w, BodyId id, const char* field) {
+  if (!w.bodyIds.isValidId(id)) {
+    throwInvalid(field, static_cast<double>(id.index), "body does not exist (destroyed or never created)");
+  }
+  return id.index;
+}
+
+void validateBase(const JointDefBase& def) {
+  requireFinite(def.localAnchorA, "localAnchorA");
+  requireFinite(def.localAnchorB, "localAnchorB");
+  if (std::isnan(def.breakForce) || def.breakForce < 0.0f) {
+    throwInvalid("breakForce", def.breakForce, "must be >= 0 (infinity: unbreakable)");
+  }
+  if (std::isnan(def.breakTorque) || def.breakTorque < 0.0f) {
+    throwInvalid("breakTorque", def.breakTorque, "must be >= 0 (infinity: unbreakable)");
+  }
+}
+
+void validateSpring(float hertz, float dampingRatio) {
+  requireNonNegative(hertz, "hertz");
+  requireNonNegative(dampingRatio, "dampingRatio");
+}
+
+void validateLimits(float lower, float upper, const char* lowerField) {
+  requireFinite(lower, lowerField);
+  requireFinite(upper, "upper");
+  if (lower > upper) {
+    throwInvalid(lowerField, lower, "lower limit above the upper one");
+  }
+}
+
+Vec2f unitAxis(const Vec2f& axis) {
+  requireFinite(axis, "localAxisA");
+  const float len = length(axis);
+  if (len < 1e-6f) {
+    throwInvalid("localAxisA", len, "axis has no direction");
+  }
+  return axis / len;
+}
+
+JointId addJoint(WorldState& w, const JointDefBase& base, detail::JointData data, bool needsBodyA = true) {
+  validateBase(base);
+  const std::uint32_t b = jointBody(w, base.bodyB, "bodyB");
+  std::uint32_t a = b;
+  if (needsBodyA || !base.bodyA.isNull()) {
+    a = jointBody(w, base.bodyA, "bodyA");
+    if (a == b) {
+      throwInvalid("bodyB", static_cast<double>(b), "a joint needs two different bodies");
+    }
+  }
+  const JointId id = w.jointIds.allocateId<JointTag>();
+  if (w.joints.size() <= id.index) {
+    w.joints.resize(id.index + 1);
+  }
+  Joint& j = w.joints[id.index];
+  j = Joint{};
+  j.data = std::move(data);
+  j.bodyA = a;
+  j.bodyB = b;
+  j.localAnchorA = base.localAnchorA;
+  j.localAnchorB = base.localAnchorB;
+  j.collideConnected = base.collideConnected;
+  j.breakForce = base.breakForce;
+  j.breakTorque = base.breakTorque;
+  j.userData = base.userData;
+  j.id = id;
+  j.alive = true;
+  detail::Body& bodyA = w.bodies[a];
+  detail::Body& bodyB = w.bodies[b];
+  bodyA.joints.push_back(id.index);
+  if (a != b) {
+    bodyB.joints.push_back(id.index);
+  }
+  bodyA.wake();
+  bodyB.wake();
+  if (!j.collideConnected && a != b) {
+    // The two bodies stop colliding: their contacts go (without events: nothing separated).
+    for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+      const detail::Contact& c = w.contacts[slot];
+      if (c.alive && ((c.bodyA == a && c.bodyB == b) || (c.bodyA == b && c.bodyB == a))) {
+        w.contactByPair.erase((std::uint64_t{c.shapeA} << 32) | c.shapeB);
+        w.contacts[slot].alive = false;
+        w.freeContacts.push_back(slot);
+      }
+    }
+  }
+  return id;
+}
+
+template <class T> T& jointData(WorldState& w, JointId id, const char* what) {
+  Joint& j = w.joint(id);
+  T* data = std::get_if<T>(&j.data);
+  if (data == nullptr) {
+    throwInvalid("joint id", static_cast<double>(id.index), std::string("not a ") + what + " joint");
+  }
+  w.bodies[j.bodyA].wake();
+  w.bodies[j.bodyB].wake();
+  return *data;
+}
+
+template <class T> const T& jointData(const WorldState& w, JointId id, const char* what) {
+  const Joint& j = w.joint(id);
+  const T* data = std::get_if<T>(&j.data);
+  if (data == nullptr) {
+    throwInvalid("joint id", static_cast<double>(id.index), std::string("not a ") + what + " joint");
+  }
+  return *data;
+}
+
+/// World anchors of a joint now.
+std::pair<Vec2f, Vec2f> worldAnchors(const WorldState& w, const Joint& j) {
+  return {transformPoint(w.bodies[j.bodyA].transform, j.localAnchorA),
+          transformPoint(w.bodies[j.bodyB].transform, j.localAnchorB)};
+}
+
+} // namespace
+
+JointId World::createJoint(const RevoluteJointDef& def) {
+  requireFinite(def.referenceAngle, "referenceAngle");
+  if (def.enableLimit) {
+    validateLimits(def.lowerAngle, def.upperAngle, "lowerAngle");
+  }
+  requireFinite(def.motorSpeed, "motorSpeed");
+  requireNonNegative(def.maxMotorTorque, "maxMotorTorque");
+  requireNonNegative(def.frictionTorque, "frictionTorque");
+  validateSpring(def.hertz, def.dampingRatio);
+  detail::RevoluteJoint j;
+  j.def = def;
+  return addJoint(*impl_, def, j);
+}
+
+JointId World::createJoint(const PrismaticJointDef& def) {
+  requireFinite(def.referenceAngle, "referenceAngle");
+  if (def.enableLimit) {
+    validateLimits(def.lowerTranslation, def.upperTranslation, "lowerTranslation");
+  }
+  requireFinite(def.motorSpeed, "motorSpeed");
+  requireNonNegative(def.maxMotorForce, "maxMotorForce");
+  validateSpring(def.hertz, def.dampingRatio);
+  detail::PrismaticJoint j;
+  j.def = def;
+  j.def.localAxisA = unitAxis(def.localAxisA);
+  return addJoint(*impl_, def, j);
+}
+
+JointId World::createJoint(const DistanceJointDef& def) {
+  requirePositive(def.length, "length");
+  if (def.enableLimit) {
+    requireNonNegative(def.minLength, "minLength");
+    if (std::isnan(def.maxLength) || def.maxLength < def.minLength) {
+      throwInvalid("maxLength", def.maxLength, "must be >= minLength");
+    }
+  }
+  requireFinite(def.motorSpeed, "motorSpeed");
+  requireNonNegative(def.maxMotorForce, "maxMotorForce");
+  validateSpring(def.hertz, def.dampingRatio);
+  detail::DistanceJoint j;
+  j.def = def;
+  return addJoint(*impl_, def, j);
+}
+
+JointId World::createJoint(const WeldJointDef& def) {
+  requireFinite(def.referenceAngle, "referenceAngle");
+  requireNonNegative(def.linearHertz, "linearHertz");
+  requireNonNegative(def.linearDampingRatio, "linearDampingRatio");
+  requireNonNegative(def.angularHertz, "angularHertz");
+  requireNonNegative(def.angularDampingRatio, "angularDampingRatio");
+  detail::WeldJoint j;
+  j.def = def;
+  return addJoint(*impl_, def, j);
+}
+
+JointId World::createJoint(const WheelJointDef& def) {
+  if (def.enableLimit) {
+    validateLimits(def.lowerTranslation, def.upperTranslation, "lowerTranslation");
+  }
+  requireFinite(def.motorSpeed, "motorSpeed");
+  requireNonNegative(def.maxMotorTorque, "maxMotorTorque");
+  validateSpring(def.hertz, def.dampingRatio);
+  detail::WheelJoint j;
+  j.def = def;
+  j.def.localAxisA = unitAxis(def.localAxisA);
+  return addJoint(*impl_, def, j);
+}
+
+JointId World::createJoint(const MotorJointDef& def) {
+  requireFinite(def.linearOffset, "linearOffset");
+  requireFinite(def.angularOffset, "angularOffset");
+  requireNonNegative(def.maxForce, "maxForce");
+  requireNonNegative(def.maxTorque, "maxTorque");
+  if (!(def.correctionFactor >= 0.0f && def.correctionFactor <= 1.0f)) {
+    throwInvalid("correctionFactor", def.correctionFactor, "must be in [0, 1]");
+  }
+  detail::MotorJoint j;
+  j.def = def;
+  return addJoint(*impl_, def, j);
+}
+
+JointId World::createJoint(const MouseJointDef& def) {
+  requireFinite(def.target, "target");
+  validateSpring(def.hertz, def.dampingRatio);
+  requireNonNegative(def.maxForce, "maxForce");
+  detail::MouseJoint j;
+  j.def = def;
+  // The mouse joint pulls B toward a world point: body A is a placeholder for B (the joint's
+  // solver treats it as static).
+  return addJoint(*impl_, def, j, false);
+}
+
+void World::destroyJoint(JointId id) {
+  WorldState& w = *impl_;
+  Joint& j = w.joint(id);
+  for (std::uint32_t body : {j.bodyA, j.bodyB}) {
+    detail::Body& b = w.bodies[body];
+    std::erase(b.joints, id.index);
+    b.wake();
+    if (!j.collideConnected) {
+      // The bodies may collide again: look for their pairs next step.
+      for (std::uint32_t shape : b.shapes) {
+        w.moveBuffer.push_back(shape);
+      }
+    }
+  }
+  j = Joint{};
+  w.jointIds.freeId(id);
+}
+
+bool World::isValid(JointId id) const noexcept { return impl_->jointIds.isValidId(id); }
+std::size_t World::jointCount() const noexcept { return impl_->jointIds.size(); }
+JointType World::jointType(JointId id) const { return impl_->joint(id).type(); }
+BodyId World::jointBodyA(JointId id) const { return impl_->bodies[impl_->joint(id).bodyA].id; }
+BodyId World::jointBodyB(JointId id) const { return impl_->bodies[impl_->joint(id).bodyB].id; }
+Vec2f World::jointReactionForce(JointId id) const { return impl_->joint(id).reaction.force; }
+float World::jointReactionTorque(JointId id) const { return impl_->joint(id).reaction.torque; }
+const JointEvents& World::jointEvents() const noexcept { return impl_->jointEvents; }
+
+float World::revoluteAngle(JointId id) const {
+  const auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
+  const Joint& j = impl_->joint(id);
+  return detail::unwindAngle(
+      detail::relativeAngle(impl_->bodies[j.bodyB].transform.q, impl_->bodies[j.bodyA].transform.q) -
+      r.def.referenceAngle);
+}
+
+float World::revoluteMotorTorque(JointId id) const {
+  const auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
+  return r.motorImpulse * impl_->lastInverseH;
+}
+
+void World::setRevoluteMotor(JointId id, bool enable, float speed, float maxTorque) {
+  requireFinite(speed, "motorSpeed");
+  requireNonNegative(maxTorque, "maxMotorTorque");
+  auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
+  r.def.enableMotor = enable;
+  r.def.motorSpeed = speed;
+  r.def.maxMotorTorque = maxTorque;
+}
+
+void World::setRevoluteLimit(JointId id, bool enable, float lower, float upper) {
+  validateLimits(lower, upper, "lowerAngle");
+  auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
+  r.def.enableLimit = enable;
+  r.def.lowerAngle = lower;
+  r.def.upperAngle = upper;
+}
+
+float World::prismaticTranslation(JointId id) const {
+  const auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
+  const Joint& j = impl_->joint(id);
+  const auto [pA, pB] = worldAnchors(*impl_, j);
+  return dot(pB - pA, rotate(impl_->bodies[j.bodyA].transform.q, p.def.localAxisA));
+}
+
+float World::prismaticMotorForce(JointId id) const {
+  const auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
+  return p.motorImpulse * impl_->lastInverseH;
+}
+
+void World::setPrismaticMotor(JointId id, bool enable, float speed, float maxForce) {
+  requireFinite(speed, "motorSpeed");
+  requireNonNegative(maxForce, "maxMotorForce");
+  auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
+  p.def.enableMotor = enable;
+  p.def.motorSpeed = speed;
+  p.def.maxMotorForce = maxForce;
+}
+
+void World::setPrismaticLimit(JointId id, bool enable, float lower, float upper) {
+  validateLimits(lower, upper, "lowerTranslation");
+  auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
+  p.def.enableLimit = enable;
+  p.def.lowerTranslation = lower;
+  p.def.upperTranslation = upper;
+}
+
+float World::distanceJointLength(JointId id) const {
+  (void)jointData<detail::DistanceJoint>(*impl_, id, "distance");
+  const auto [pA, pB] = worldAnchors(*impl_, impl_->joint(id));
+  return distance(pA, pB);
+}
+
+void World::setDistanceJointLength(JointId id, float length) {
+  requirePositive(length, "length");
+  jointData<detail::DistanceJoint>(*impl_, id, "distance").def.length = length;
+}
+
+float World::wheelMotorTorque(JointId id) const {
+  const auto& wj = jointData<detail::WheelJoint>(*impl_, id, "wheel");
+  return wj.motorImpulse * impl_->lastInverseH;
+}
+
+void World::setWheelMotor(JointId id, bool enable, float speed, float maxTorque) {
+  requireFinite(speed, "motorSpeed");
+  requireNonNegative(maxTorque, "maxMotorTorque");
+  auto& wj = jointData<detail::WheelJoint>(*impl_, id, "wheel");
+  wj.def.enableMotor = enable;
+  wj.def.motorSpeed = speed;
+  wj.def.maxMotorTorque = maxTorque;
+}
+
+void World::setMotorJointTarget(JointId id, const Vec2f& linearOffset, float angularOffset) {
+  requireFinite(linearOffset, "linearOffset");
+  requireFinite(angularOffset, "angularOffset");
+  auto& m = jointData<detail::MotorJoint>(*impl_, id, "motor");
+  m.def.linearOffset = linearOffset;
+  m.def.angularOffset = angularOffset;
+}
+
+void World::setMouseTarget(JointId id, const Vec2f& target) {
+  requireFinite(target, "target");
+  jointData<detail::MouseJoint>(*impl_, id, "mouse").def.target = target;
+}
+
+} // namespace impetus::rigid2d
