@@ -19,7 +19,7 @@
 
 namespace impetus::rigid2d::detail {
 
-using Geometry = std::variant<Circle, Capsule, Polygon, Segment, ChainSegment>;
+using Geometry = ShapeGeometry;
 
 /// Shapes without area (segments and chain segments): no mass, nothing inside.
 [[nodiscard]] inline bool isLine(const Geometry& g) {

@@ -146,6 +146,39 @@ std::optional<RayHit> World::castShape(const ShapeProxy& proxy, const Transform2
   return best;
 }
 
+void World::bodyIds(std::vector<BodyId>& out) const {
+  out.clear();
+  for (const detail::Body& b : impl_->bodies) {
+    if (b.alive) {
+      out.push_back(b.id);
+    }
+  }
+}
+
+void World::bodyShapes(BodyId body, std::vector<ShapeId>& out) const {
+  const detail::Body& b = impl_->body(body);
+  out.clear();
+  for (std::uint32_t slot : b.shapes) {
+    out.push_back(impl_->shapes[slot].id);
+  }
+}
+
+BodyType World::bodyType(BodyId id) const { return impl_->body(id).type; }
+
+namespace {
+const Shape& shapeOf(const detail::WorldState& w, ShapeId id) {
+  if (!w.shapeIds.isValidId(id)) {
+    throwInvalid("shape id", static_cast<double>(id.index), "shape does not exist");
+  }
+  return w.shapes[id.index];
+}
+} // namespace
+
+ShapeGeometry World::shapeGeometry(ShapeId shape) const { return shapeOf(*impl_, shape).geometry; }
+float World::shapeDensity(ShapeId shape) const { return shapeOf(*impl_, shape).density; }
+float World::shapeFriction(ShapeId shape) const { return shapeOf(*impl_, shape).friction; }
+bool World::isSensor(ShapeId shape) const { return shapeOf(*impl_, shape).sensor; }
+
 BodyId World::shapeBody(ShapeId shape) const {
   if (!impl_->shapeIds.isValidId(shape)) {
     throwInvalid("shape id", static_cast<double>(shape.index), "shape does not exist");

@@ -24,9 +24,13 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <variant>
 #include <vector>
 
 namespace impetus::rigid2d {
+
+/// Any shape's geometry, in its body's frame.
+using ShapeGeometry = std::variant<Circle, Capsule, Polygon, Segment, ChainSegment>;
 
 /// Two shapes started touching (their manifold gained points) this step.
 struct ContactBeginEvent {
@@ -174,6 +178,18 @@ public:
   [[nodiscard]] std::vector<ShapeId> queryPoint(const Vec2f& point) const;
   /// The body a shape belongs to.
   [[nodiscard]] BodyId shapeBody(ShapeId shape) const;
+
+  // Inspection (for effectors, tools, renderers).
+  /// Every live body's id, in slot order, into `out` (cleared first; its capacity is reused).
+  void bodyIds(std::vector<BodyId>& out) const;
+  /// A body's shapes, in creation order, into `out` (cleared first).
+  void bodyShapes(BodyId body, std::vector<ShapeId>& out) const;
+  [[nodiscard]] BodyType bodyType(BodyId id) const;
+  /// A shape's geometry in its body's frame, and its material.
+  [[nodiscard]] ShapeGeometry shapeGeometry(ShapeId shape) const;
+  [[nodiscard]] float shapeDensity(ShapeId shape) const;
+  [[nodiscard]] float shapeFriction(ShapeId shape) const;
+  [[nodiscard]] bool isSensor(ShapeId shape) const;
 
   /// Events of the last step, in a fixed order (valid until the next step).
   [[nodiscard]] const ContactEvents& contactEvents() const noexcept;
