@@ -32,6 +32,10 @@ void prepareJoints(WorldState& w, const StepContext& context) {
     f.frameB = rotate(b.transform.q, joint.localAnchorB - b.localCenter);
     f.deltaCenter = b.center - a.center;
     f.deltaAngle = relativeAngle(b.transform.q, a.transform.q);
+    f.qA = a.transform.q;
+    f.qB = b.transform.q;
+    f.localCenterA = a.localCenter;
+    f.localCenterB = b.localCenter;
     std::visit([&](auto& data) { prepareJoint(data, f, context); }, joint.data);
     joint.solved = true;
   }

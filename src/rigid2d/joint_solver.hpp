@@ -28,6 +28,8 @@ struct JointFrame {
   Vec2f frameA, frameB;                 ///< anchors relative to the centres of mass, world axes, at the step's start, m
   Vec2f deltaCenter;                    ///< cB - cA at the step's start, m
   float deltaAngle = 0.0f;              ///< angleB - angleA at the step's start (in (-pi, pi]), rad
+  Rot2f qA, qB;                         ///< the bodies' rotations at the step's start
+  Vec2f localCenterA, localCenterB;     ///< centres of mass in the body frames, m (origin = c - rotate(q, localCenter))
 };
 
 /// The angle of qB relative to qA, in (-pi, pi].

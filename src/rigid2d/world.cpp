@@ -506,6 +506,23 @@ float World::angularVelocity(BodyId id) const { return impl_->body(id).angularVe
 float World::mass(BodyId id) const { return impl_->body(id).mass; }
 float World::rotationalInertia(BodyId id) const { return impl_->body(id).inertia; }
 
+void World::setMassData(BodyId id, const MassData& massData) {
+  Body& b = impl_->body(id);
+  if (b.type != BodyType::dynamicBody) {
+    throwInvalid("body id", static_cast<double>(id.index), "only a dynamic body has a mass to set");
+  }
+  requirePositive(massData.mass, "mass");
+  requireFinite(massData.center, "center");
+  requirePositive(massData.rotationalInertia, "rotationalInertia");
+  b.mass = massData.mass;
+  b.inverseMass = 1.0f / massData.mass;
+  b.localCenter = massData.center;
+  b.inertia = b.fixedRotation ? 0.0f : massData.rotationalInertia;
+  b.inverseInertia = b.fixedRotation ? 0.0f : 1.0f / massData.rotationalInertia;
+  b.center = transformPoint(b.transform, b.localCenter);
+  b.wake();
+}
+
 void World::setTransform(BodyId id, const Vec2f& position, float angle) {
   requireFinite(position, "position");
   requireFinite(angle, "angle");

@@ -28,6 +28,10 @@ const std::vector<Demo>& demos() {
        demoCannon2},
       {"explosion", "the book's kinematic particle explosion (ch. 2): spawn, fly, fade", demoExplosion},
       {"magnus", "the book's Magnus demo (ch. 6), corrected: a spinning ball curves", demoMagnus},
+      {"hovercraft", "the book's ch. 9 hovercraft on the 2D engine: thrust, drag aft of the CG, soft turns",
+       demoHovercraft},
+      {"bumper-cars", "the book's ch. 10 collision: two hovercraft, e = 0.5, book impulse vs soft step",
+       demoBumperCars},
   };
   return all;
 }

@@ -31,5 +31,7 @@ int demoCannon(const DemoOptions& options);
 int demoCannon2(const DemoOptions& options);
 int demoExplosion(const DemoOptions& options);
 int demoMagnus(const DemoOptions& options);
+int demoHovercraft(const DemoOptions& options);
+int demoBumperCars(const DemoOptions& options);
 
 } // namespace impetus::cli

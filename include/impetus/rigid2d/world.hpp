@@ -147,6 +147,10 @@ public:
   [[nodiscard]] float angularVelocity(BodyId id) const;
   [[nodiscard]] float mass(BodyId id) const;
   [[nodiscard]] float rotationalInertia(BodyId id) const; ///< about the centre of mass
+  /// Overrides a dynamic body's mass (kg, > 0), centre of mass (body frame) and rotational inertia
+  /// about it (kg m^2, > 0; ignored with fixedRotation), e.g. to match a model's published
+  /// values; until the next shape is added to the body, which recomputes them from densities.
+  void setMassData(BodyId id, const MassData& massData);
   /// Sleeping: bodies whose whole island (bodies joined by touching contacts) has been slower
   /// than the sleep tolerances for timeToSleep fall asleep, and are neither moved nor solved
   /// until something touches them or the API changes them.
