@@ -9,7 +9,7 @@ namespace impetus::rigid2d::detail {
 struct PrismaticJoint {
   PrismaticJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
   // Accumulated impulses: solver state, kept from step to step for warm starting.
-  Vec2f impulse;              ///< perpendicular (x) and angular (y) constraint, per substep
+  Vec2f impulse;              ///< perpendicular (x, N s) and angular (y, N m s) constraint, per substep
   float springImpulse = 0.0f; ///< N s per substep, along the axis
   float motorImpulse = 0.0f;
   float lowerImpulse = 0.0f;
@@ -18,7 +18,39 @@ struct PrismaticJoint {
   Vec2f axisA;            ///< the axis in world axes at the step's start
   float axialMass = 0.0f; ///< kg
   Softness springSoftness;
+  /// The axis in world axes as the last solve saw it (body A turned through the step): the
+  /// direction of the reaction's axial part.
+  Vec2f solvedAxis;
 };
+
+/// A point of B sliding on a line fixed in A (the prismatic and wheel joints), now: the anchors
+/// turned by each body's rotation so far this step and the line turned with A.
+struct SliderGeometry {
+  Vec2f rA, rB;    ///< anchors relative to the centres of mass, world axes, m
+  Vec2f d;         ///< anchor B minus anchor A, m
+  Vec2f axis;      ///< the line's unit direction, world axes
+  Vec2f normal;    ///< perp(axis)
+  float a1 = 0.0f; ///< moment arm of an axial impulse on A: cross(d + rA, axis), m (A's line turns with A)
+  float a2 = 0.0f; ///< on B: cross(rB, axis), m
+  float s1 = 0.0f; ///< moment arms of a normal impulse: cross(d + rA, normal), m
+  float s2 = 0.0f; ///< cross(rB, normal), m
+};
+
+/// The slider now; `axisAtStart` is the line's direction in world axes at the step's start.
+[[nodiscard]] SliderGeometry sliderGeometry(const Vec2f& axisAtStart, const JointFrame& f, const BodyState& a,
+                                            const BodyState& b);
+/// The rate of change of the translation dot(axis, d) (m/s): B's anchor's velocity relative to
+/// A's along the axis, plus the turning of the axis with A.
+[[nodiscard]] float axialSpeed(const SliderGeometry& g, const BodyState& a, const BodyState& b);
+/// An impulse (N s) along the axis: -impulse on A, +impulse on B, with their moments.
+void applyAxial(const SliderGeometry& g, const JointFrame& f, BodyState& a, BodyState& b, float impulse);
+/// The effective mass along the axis at the step's start, kg (0 when neither body can move).
+[[nodiscard]] float sliderAxialMass(const Vec2f& axis, const JointFrame& f);
+/// A one-sided translation limit (lower: direction +1, c = translation - lower; upper: -1,
+/// c = upper - translation) keeping c >= 0 with an accumulated impulse >= 0: speculative while
+/// inside (may close the gap this substep, no more), soft at the joint stiffness when violated.
+void solveTranslationLimit(float& accumulated, float c, float direction, const SliderGeometry& g, const JointFrame& f,
+                           BodyState& a, BodyState& b, float axialMass, const StepContext& context, bool useBias);
 
 void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const StepContext& context);
 void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "rigid2d/joint_solver.hpp"
+#include "rigid2d/prismatic_joint.hpp" // SliderGeometry: the wheel slides on its axis as a prismatic joint does
 
 namespace impetus::rigid2d::detail {
 
@@ -15,11 +16,14 @@ struct WheelJoint {
   float lowerImpulse = 0.0f;
   float upperImpulse = 0.0f;
   // This step's constants.
-  Vec2f axisA; ///< the axis in world axes at the step's start
-  float perpMass = 0.0f;
-  float axialMass = 0.0f;
-  float motorMass = 0.0f;
+  Vec2f axisA;            ///< the axis in world axes at the step's start
+  float perpMass = 0.0f;  ///< across the axis, kg
+  float axialMass = 0.0f; ///< along the axis, kg: the mass the suspension spring carries
+  float motorMass = 0.0f; ///< 1 / (iA + iB), kg m^2
   Softness springSoftness;
+  /// The axis in world axes as the last solve saw it (the chassis turned through the step): the
+  /// direction of the reaction's axial part.
+  Vec2f solvedAxis;
 };
 
 void prepareJoint(WheelJoint& joint, const JointFrame& frame, const StepContext& context);
