@@ -33,6 +33,7 @@ Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
     fd.density = sceneDensity;
     fd.friction = sceneFriction;
     fd.restitution = 0.0f;
+    fd.filter.groupIndex = static_cast<int16_t>(s.group);
     b2PolygonShape box;
     b2CircleShape circle;
     if (s.kind == SceneShape::Kind::circle) {
@@ -44,6 +45,14 @@ Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
       fd.shape = &box;
     }
     built.bodies[s.body]->CreateFixture(&fd);
+  }
+  for (const SceneJoint& j : scene.joints) {
+    b2RevoluteJointDef jd;
+    jd.Initialize(built.bodies[j.bodyA], built.bodies[j.bodyB], b2Vec2(j.anchor.x, j.anchor.y));
+    jd.enableLimit = j.enableLimit;
+    jd.lowerAngle = j.lowerAngle;
+    jd.upperAngle = j.upperAngle;
+    built.world->CreateJoint(&jd);
   }
   return built;
 }

@@ -7,7 +7,7 @@
 //   impetus-bench [--scene NAME]... [--steps N] [--threads N] [--substeps N] [--contact-hertz H]
 //                 [--engine both|impetus|box2d] [--box2d-continuous] [--json]
 //
-// NAME is a scene (large_pyramid, many_pyramids, tumbler, smash, rain_1k, rain_10k, rain_100k, or
+// NAME is a scene (large_pyramid, many_pyramids, tumbler, smash, joint_grid, ragdolls, rain_1k, rain_10k, rain_100k, or
 // rain_N / rain_Nk for other counts), "rain" (the three rain sizes) or "all" (the default). Each
 // scene is built (not timed), then stepped N times (default: the scene's own count, 500 for the
 // pyramids) with a steady clock around the whole step loop: no warm-up, the pyramid's first
@@ -42,9 +42,10 @@ namespace bench = impetus::bench;
 /// What one engine did with one scene.
 struct EngineResult {
   double msPerStep = 0.0;
-  float topSink = 0.0f;        ///< m, at the end (negative: the tops rose)
-  float topMaxSink = 0.0f;     ///< m, the most at the end of any step
-  float largestOverlap = 0.0f; ///< m
+  float topSink = 0.0f;         ///< m, at the end (negative: the tops rose)
+  float topMaxSink = 0.0f;      ///< m, the most at the end of any step
+  float largestOverlap = 0.0f;  ///< m
+  float largestJointGap = 0.0f; ///< m, the widest gap between a joint's anchors (scenes with joints)
   std::size_t touchingContacts = 0;
   bool finite = true;
 };
@@ -60,6 +61,7 @@ void measureQuality(const bench::Rigid2dScene& scene, const std::vector<Transfor
   r.finite = bench::allFinite(transforms);
   r.topSink = bench::topSink(scene, transforms);
   r.largestOverlap = r.finite ? bench::largestOverlap(scene, transforms) : 0.0f;
+  r.largestJointGap = r.finite ? bench::largestJointGap(scene, transforms) : 0.0f;
 }
 
 /// The scene's pyramid tops: their bodies' starting heights, to follow their sinking during the
@@ -168,7 +170,8 @@ int main(int argc, char** argv) {
   bool json = false;
   bool peerContinuous = false;
   app.add_option("--scene", requested,
-                 "large_pyramid, many_pyramids, tumbler, smash, rain_1k, rain_10k, rain_100k, rain (all three) or all")
+                 "large_pyramid, many_pyramids, tumbler, smash, joint_grid, ragdolls, rain_1k, rain_10k, rain_100k, "
+                 "rain (all three) or all")
       ->capture_default_str();
   app.add_option("--steps", stepsOverride, "steps of 1/60 s (default: the scene's own, 500 for the pyramids)")
       ->check(CLI::PositiveNumber);
@@ -248,6 +251,9 @@ int main(int argc, char** argv) {
           j["impetus_top_max_sink_m"] = ri->topMaxSink;
         }
         j["impetus_largest_overlap_m"] = ri->largestOverlap;
+        if (!scene.joints.empty()) {
+          j["impetus_largest_joint_gap_m"] = ri->largestJointGap;
+        }
         j["impetus_touching_contacts"] = ri->touchingContacts;
         j["impetus_finite"] = ri->finite;
       }
@@ -262,6 +268,9 @@ int main(int argc, char** argv) {
           j["peer_top_max_sink_m"] = rb->topMaxSink;
         }
         j["peer_largest_overlap_m"] = rb->largestOverlap;
+        if (!scene.joints.empty()) {
+          j["peer_largest_joint_gap_m"] = rb->largestJointGap;
+        }
         j["peer_touching_contacts"] = rb->touchingContacts;
         j["peer_finite"] = rb->finite;
       }
@@ -283,6 +292,11 @@ int main(int argc, char** argv) {
       };
       std::printf("%-14s %7zu %5d | %s | %s | %6s\n", scene.name.c_str(), scene.bodies.size(), steps, cells(ri).c_str(),
                   cells(rb).c_str(), both ? fixed(ratio, 2).c_str() : "-");
+      if (!scene.joints.empty()) {
+        std::printf("%-14s %7zu joints; widest joint gap at the end: Impetus %s m, Box2D %s m\n", "",
+                    scene.joints.size(), ri ? fixed(ri->largestJointGap, 4).c_str() : "-",
+                    rb ? fixed(rb->largestJointGap, 4).c_str() : "-");
+      }
       std::fflush(stdout);
     }
   }

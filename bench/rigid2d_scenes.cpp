@@ -33,12 +33,20 @@ void addBox(Rigid2dScene& scene, std::uint32_t body, float halfWidth, float half
   scene.shapes.push_back(s);
 }
 
-void addCircle(Rigid2dScene& scene, std::uint32_t body, float radius) {
+void addCircle(Rigid2dScene& scene, std::uint32_t body, float radius, std::int32_t group = 0,
+               const Vec2f& center = {}) {
   SceneShape s;
   s.kind = SceneShape::Kind::circle;
   s.body = body;
   s.radius = radius;
+  s.group = group;
+  s.center = center;
   scene.shapes.push_back(s);
+}
+
+void addJoint(Rigid2dScene& scene, std::uint32_t a, std::uint32_t b, const Vec2f& anchor, float lower = 0.0f,
+              float upper = 0.0f) {
+  scene.joints.push_back({a, b, anchor, lower != upper, lower, upper});
 }
 
 /// A pyramid of `base` boxes at the bottom, centred on x = centerX, standing on y = 0; its top
@@ -186,8 +194,93 @@ Rigid2dScene smashScene(int grid) {
   return scene;
 }
 
+Rigid2dScene jointGridScene(int grid) {
+  Rigid2dScene scene;
+  scene.name = "joint_grid";
+  constexpr float shift = 1.0f;
+  constexpr float radius = 0.4f;
+  const auto index = [&](int row, int column) { return static_cast<std::uint32_t>(row * grid + column); };
+  for (int row = 0; row < grid; ++row) {
+    for (int column = 0; column < grid; ++column) {
+      const bool pinned = row == 0 && std::abs(column - grid / 2) <= 3;
+      const Vec2f p{static_cast<float>(column - grid / 2) * shift, -static_cast<float>(row) * shift};
+      const std::uint32_t b = addBody(scene, pinned ? BodyType::staticBody : BodyType::dynamicBody, p);
+      addCircle(scene, b, radius, -1);
+      if (row > 0) {
+        addJoint(scene, index(row - 1, column), b, {p.x, p.y + 0.5f * shift});
+      }
+      if (column > 0) {
+        addJoint(scene, index(row, column - 1), b, {p.x - 0.5f * shift, p.y});
+      }
+    }
+  }
+  scene.defaultSteps = 500;
+  return scene;
+}
+
+namespace {
+
+/// One ragdoll standing with its feet at `feet`: torso, head, upper and lower arms and legs.
+void addRagdoll(Rigid2dScene& scene, const Vec2f& feet) {
+  constexpr float pi = 3.14159265f;
+  const auto part = [&](const Vec2f& center, float hx, float hy) {
+    const std::uint32_t b = addBody(scene, BodyType::dynamicBody, feet + center);
+    addBox(scene, b, hx, hy);
+    return b;
+  };
+  const std::uint32_t torso = part({0.0f, 1.15f}, 0.15f, 0.3f);
+  const std::uint32_t head = addBody(scene, BodyType::dynamicBody, feet + Vec2f{0.0f, 1.6f});
+  addCircle(scene, head, 0.13f);
+  addJoint(scene, torso, head, feet + Vec2f{0.0f, 1.47f}, -0.4f, 0.4f);
+  for (const float side : {-1.0f, 1.0f}) {
+    const std::uint32_t upperLeg = part({0.08f * side, 0.65f}, 0.07f, 0.2f);
+    const std::uint32_t lowerLeg = part({0.08f * side, 0.225f}, 0.06f, 0.2f);
+    addJoint(scene, torso, upperLeg, feet + Vec2f{0.08f * side, 0.85f}, -0.5f * pi, 0.25f * pi);
+    addJoint(scene, upperLeg, lowerLeg, feet + Vec2f{0.08f * side, 0.44f}, -0.05f, 0.8f * pi);
+    const std::uint32_t upperArm = part({0.22f * side, 1.25f}, 0.05f, 0.16f);
+    const std::uint32_t lowerArm = part({0.22f * side, 0.92f}, 0.045f, 0.16f);
+    addJoint(scene, torso, upperArm, feet + Vec2f{0.22f * side, 1.4f}, -pi, pi);
+    addJoint(scene, upperArm, lowerArm, feet + Vec2f{0.22f * side, 1.08f}, -0.8f * pi, 0.05f);
+  }
+}
+
+} // namespace
+
+Rigid2dScene ragdollScene(int columns, int rows) {
+  Rigid2dScene scene;
+  scene.name = "ragdolls";
+  constexpr float pitch = 1.0f;  // m between ragdolls in a row
+  constexpr float height = 2.2f; // m between rows
+  const float halfInner = 0.5f * static_cast<float>(columns) * pitch + 0.5f;
+  const std::uint32_t ground = addBody(scene, BodyType::staticBody, {0.0f, 0.0f});
+  addBox(scene, ground, halfInner + 1.0f, 1.0f, {0.0f, -1.0f});
+  addBox(scene, ground, 0.5f, 20.0f, {-halfInner - 0.5f, 20.0f});
+  addBox(scene, ground, 0.5f, 20.0f, {halfInner + 0.5f, 20.0f});
+  for (int row = 0; row < rows; ++row) {
+    for (int column = 0; column < columns; ++column) {
+      const float shift = row % 2 == 1 ? 0.3f : 0.0f;
+      addRagdoll(scene, {(static_cast<float>(column) - 0.5f * static_cast<float>(columns - 1)) * pitch + shift,
+                         0.5f + static_cast<float>(row) * height});
+    }
+  }
+  scene.defaultSteps = 500;
+  return scene;
+}
+
+float largestJointGap(const Rigid2dScene& scene, std::span<const Transform2f> transforms) {
+  float widest = 0.0f;
+  for (const SceneJoint& j : scene.joints) {
+    const Vec2f localA = j.anchor - scene.bodies[j.bodyA].position; // bodies start unrotated
+    const Vec2f localB = j.anchor - scene.bodies[j.bodyB].position;
+    widest = std::max(
+        widest, distance(transformPoint(transforms[j.bodyA], localA), transformPoint(transforms[j.bodyB], localB)));
+  }
+  return widest;
+}
+
 std::vector<std::string> rigid2dSceneNames() {
-  return {"large_pyramid", "many_pyramids", "tumbler", "smash", "rain_1k", "rain_10k", "rain_100k"};
+  return {"large_pyramid", "many_pyramids", "tumbler",  "smash",    "joint_grid",
+          "ragdolls",      "rain_1k",       "rain_10k", "rain_100k"};
 }
 
 Rigid2dScene makeRigid2dScene(std::string_view name) {
@@ -203,6 +296,12 @@ Rigid2dScene makeRigid2dScene(std::string_view name) {
   if (name == "smash") {
     return smashScene();
   }
+  if (name == "joint_grid") {
+    return jointGridScene();
+  }
+  if (name == "ragdolls") {
+    return ragdollScene();
+  }
   // rain_N or rain_Nk: N (thousand) circles.
   if (name.starts_with("rain_") && name.size() > 5) {
     std::string_view digits = name.substr(5);
@@ -217,9 +316,9 @@ Rigid2dScene makeRigid2dScene(std::string_view name) {
       return rainScene(count * scale);
     }
   }
-  throw Error("scene",
-              "unknown 2D benchmark scene '" + std::string(name) +
-                  "' (large_pyramid, many_pyramids, tumbler, smash, rain_N or rain_Nk: rain_1k, rain_10k, rain_100k)");
+  throw Error("scene", "unknown 2D benchmark scene '" + std::string(name) +
+                           "' (large_pyramid, many_pyramids, tumbler, smash, joint_grid, ragdolls, rain_N or rain_Nk: "
+                           "rain_1k, rain_10k, rain_100k)");
 }
 
 ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings& settings) {
@@ -245,11 +344,23 @@ ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings&
   sd.friction = sceneFriction;
   for (const SceneShape& s : scene.shapes) {
     const rigid2d::BodyId body = built.bodies[s.body];
+    sd.filter.group = s.group;
     if (s.kind == SceneShape::Kind::circle) {
       built.world.createShape(body, sd, rigid2d::Circle{s.center, s.radius});
     } else {
       built.world.createShape(body, sd, rigid2d::makeOffsetBox(s.halfWidth, s.halfHeight, s.center, s.angle));
     }
+  }
+  for (const SceneJoint& j : scene.joints) {
+    rigid2d::RevoluteJointDef jd;
+    jd.bodyA = built.bodies[j.bodyA];
+    jd.bodyB = built.bodies[j.bodyB];
+    jd.localAnchorA = j.anchor - scene.bodies[j.bodyA].position; // bodies start unrotated
+    jd.localAnchorB = j.anchor - scene.bodies[j.bodyB].position;
+    jd.enableLimit = j.enableLimit;
+    jd.lowerAngle = j.lowerAngle;
+    jd.upperAngle = j.upperAngle;
+    built.world.createJoint(jd);
   }
   return built;
 }

@@ -27,8 +27,20 @@ struct SceneShape {
   Vec2f center;           ///< box or circle centre in the body frame, m
   float halfWidth = 0.0f; ///< box, m
   float halfHeight = 0.0f;
-  float angle = 0.0f;  ///< box rotation in the body frame, rad
-  float radius = 0.0f; ///< circle, m
+  float angle = 0.0f;     ///< box rotation in the body frame, rad
+  float radius = 0.0f;    ///< circle, m
+  std::int32_t group = 0; ///< collision group (negative: shapes of the group never collide)
+};
+
+/// A revolute joint between two bodies at a world point (the scene's initial pose), with
+/// optional angle limits.
+struct SceneJoint {
+  std::uint32_t bodyA = 0;
+  std::uint32_t bodyB = 0;
+  Vec2f anchor; ///< world, m, at the start
+  bool enableLimit = false;
+  float lowerAngle = 0.0f; ///< rad
+  float upperAngle = 0.0f; ///< rad
 };
 
 struct SceneBody {
@@ -44,6 +56,7 @@ struct Rigid2dScene {
   std::string name;
   std::vector<SceneBody> bodies;
   std::vector<SceneShape> shapes; ///< grouped by body, in body order
+  std::vector<SceneJoint> joints;
   /// Bodies whose sinking is the quality figure (the top box of each pyramid); may be empty.
   std::vector<std::uint32_t> tops;
   int defaultSteps = 500;      ///< steps of 1/60 s the benchmark runs by default
@@ -98,6 +111,19 @@ inline constexpr float tumblerSpeed = 25.0f * 3.14159265358979f / 180.0f; ///< r
 inline constexpr int smashGrid = 60;
 [[nodiscard]] Rigid2dScene smashScene(int grid = smashGrid);
 
+/// "joint_grid" (after Box2D v3's): grid x grid circles of radius 0.4 m, 1 m apart, each joined
+/// by revolute joints to its neighbours above and to the left; seven circles in the middle of the
+/// top row are static, so the net hangs and swings. The circles do not collide (one negative
+/// group). 500 steps. Quality: the widest gap between a joint's two anchors at the end.
+inline constexpr int jointGridSize = 100;
+[[nodiscard]] Rigid2dScene jointGridScene(int grid = jointGridSize);
+
+/// "ragdolls": `columns` x `rows` ragdolls of 9 boxes and a circle head joined by 9 revolute
+/// joints with limits (elbows, knees, shoulders, hips, neck), dropped into an open box. 500 steps.
+inline constexpr int ragdollColumns = 20;
+inline constexpr int ragdollRows = 15;
+[[nodiscard]] Rigid2dScene ragdollScene(int columns = ragdollColumns, int rows = ragdollRows);
+
 /// Scene names, in the benchmark's order: large_pyramid, many_pyramids, tumbler, rain_1k,
 /// rain_10k, rain_100k.
 [[nodiscard]] std::vector<std::string> rigid2dSceneNames();
@@ -131,6 +157,8 @@ struct ImpetusSettings {
 /// transforms, m (0 when nothing overlaps): Impetus' manifold functions on the scene's exact
 /// geometry, for pairs found by sweeping the shapes' bounding boxes along x.
 [[nodiscard]] float largestOverlap(const Rigid2dScene& scene, std::span<const Transform2f> transforms);
+/// The widest gap between a joint's two anchors at these transforms, m (0 without joints).
+[[nodiscard]] float largestJointGap(const Rigid2dScene& scene, std::span<const Transform2f> transforms);
 /// Whether every transform is finite.
 [[nodiscard]] bool allFinite(std::span<const Transform2f> transforms);
 /// Number of dynamic bodies.

@@ -228,6 +228,38 @@ TEST(Smash, built_in_impetus_conserves_momentum) {
   EXPECT_LT(built.world.linearVelocity(built.bodies.back()).x, 35.0f);
 }
 
+TEST(JointGrid, is_a_net_of_circles_hanging_from_seven_pins_and_holds_together) {
+  const bench::Rigid2dScene scene = bench::jointGridScene(10);
+  EXPECT_EQ(scene.bodies.size(), 100u);
+  EXPECT_EQ(countOf(scene, BodyType::staticBody), 7u);
+  EXPECT_EQ(scene.joints.size(), 2u * 10u * 9u); // down and left links
+  bench::ImpetusScene built = bench::buildImpetusScene(scene);
+  EXPECT_EQ(built.world.jointCount(), scene.joints.size());
+  std::vector<Transform2f> start;
+  for (const bench::SceneBody& b : scene.bodies) {
+    start.push_back({b.position, impetus::Rot2f::identity()});
+  }
+  EXPECT_LT(bench::largestJointGap(scene, start), 1e-6f);
+  step(built, 120);
+  const std::vector<Transform2f> xf = bench::bodyTransforms(built);
+  ASSERT_TRUE(bench::allFinite(xf));
+  EXPECT_LT(bench::largestJointGap(scene, xf), 0.02f); // a small net: the pins hold within 2 cm
+}
+
+TEST(Ragdolls, land_in_their_box_with_their_joints_holding) {
+  const bench::Rigid2dScene scene = bench::ragdollScene(3, 2);
+  EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 6u * 10u);
+  EXPECT_EQ(scene.joints.size(), 6u * 9u);
+  bench::ImpetusScene built = bench::buildImpetusScene(scene);
+  step(built, 180);
+  const std::vector<Transform2f> xf = bench::bodyTransforms(built);
+  ASSERT_TRUE(bench::allFinite(xf));
+  EXPECT_LT(bench::largestJointGap(scene, xf), 0.02f);
+  for (std::size_t i = 1; i < xf.size(); ++i) {
+    EXPECT_GT(xf[i].p.y, -0.1f) << "body " << i << " fell through the floor";
+  }
+}
+
 TEST(Scenes, are_found_by_name_and_an_unknown_name_is_an_error) {
   for (const std::string& name : bench::rigid2dSceneNames()) {
     EXPECT_EQ(bench::makeRigid2dScene(name).name, name);
