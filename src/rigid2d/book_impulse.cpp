@@ -1,7 +1,8 @@
 // SolverKind::bookImpulse: the book's rigid-body collision response (ch. 9 and 10), kept so its
 // programs can be reproduced, with its errors fixed (../shared/spec/ch07-10.md, section 7):
 //
-// - One semi-implicit Euler step per frame (the book's UpdateBodyEuler), no substeps.
+// - One semi-implicit Euler step per frame (the book's UpdateBodyEuler), no substeps. (Joints,
+//   which the book does not have, are solved as in the soft step, once per frame.)
 // - One impulse per touching pair, J = -(1 + e) v_rn / (1/m1 + 1/m2 + (r1 x n)^2/I1 + (r2 x n)^2/I2)
 //   (impetus::resolveImpact in the mechanics layer, the book's ch. 5 formula), applied when the
 //   gap is within the contact tolerance and the pair approaches.
@@ -12,6 +13,7 @@
 // restitutionThreshold) do not bounce, so resting bodies do not jitter; Coulomb friction (the
 // book has none) is capped so slip never reverses; and overlap beyond linearSlop is pushed
 // apart after the step (the book backs up in time by halving the step, which stalls).
+#include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
 
 #include <impetus/mechanics/impact.hpp>
@@ -51,8 +53,14 @@ void solveBookImpulse(WorldState& w, float dt) {
   context.dt = dt;
   context.h = dt;
   context.inverseH = 1.0f / dt;
+  context.jointSoftness =
+      makeSoft(std::min(w.def.jointHertz, 0.25f * context.inverseH), w.def.jointDampingRatio, context.h);
   buildSolverBodies(w);
   integrateVelocities(w, context);
+  // Joints (the book has none: they are the soft step's, solved once per frame here).
+  prepareJoints(w, context);
+  warmStartJoints(w);
+  solveJoints(w, context, true);
   const std::uint32_t staticIndex = w.staticIndex();
   for (Contact& contact : w.contacts) {
     contact.approachSpeed = 0.0f;
@@ -94,6 +102,8 @@ void solveBookImpulse(WorldState& w, float dt) {
     contact.fastestPoint = 0;
   }
   integratePositions(w, context);
+  solveJoints(w, context, false);
+  finishJoints(w, context);
   // Push overlap deeper than linearSlop apart along the normal, shared by inverse mass (a
   // position correction in place of the book's step halving).
   for (const Contact& contact : w.contacts) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace impetus::rigid2d {
 namespace {
@@ -150,6 +151,40 @@ TEST(BookImpulse2D, box_rests_on_the_ground) {
   EXPECT_NEAR(world.position(box).y, 0.5f, 0.01f);
   EXPECT_LT(std::abs(world.linearVelocity(box).y), 0.2f);
   EXPECT_NEAR(world.angle(box), 0.0f, 1e-3f);
+}
+
+} // namespace
+} // namespace impetus::rigid2d
+
+namespace impetus::rigid2d {
+namespace {
+
+// Joints work in the book's mode too (solved once per frame): a 1 m pendulum keeps its length
+// within 1% and swings with the small-angle period 2 pi sqrt(L/g) within 2% (one semi-implicit
+// Euler step per frame of 1/60 s).
+TEST(BookImpulse2D, joints_are_solved_in_the_book_mode) {
+  World world(bookWorld({0.0f, -10.0f}));
+  const BodyId pivot = world.createBody({});
+  const BodyId bob = addDisc(world, {0.1f, -std::sqrt(1.0f - 0.01f)}, {}, 0.02f, 1.0f, 0.0f);
+  RevoluteJointDef joint;
+  joint.bodyA = pivot;
+  joint.bodyB = bob;
+  joint.localAnchorB = -world.position(bob);
+  world.createJoint(joint);
+  float previous = 0.0f;
+  std::vector<float> turns;
+  for (int i = 1; i < 600 && turns.size() < 3; ++i) {
+    world.step(dt);
+    const float v = world.linearVelocity(bob).x;
+    if (i > 1 && ((previous < 0.0f) != (v < 0.0f))) {
+      turns.push_back(static_cast<float>(i) * dt);
+    }
+    previous = v;
+    EXPECT_NEAR(length(world.position(bob)), 1.0f, 0.01f);
+  }
+  ASSERT_EQ(turns.size(), 3U);
+  const float period = turns[2] - turns[0];
+  EXPECT_NEAR(period, 2.0f * pi<float> * std::sqrt(1.0f / 10.0f), 0.02f * 1.987f);
 }
 
 } // namespace
