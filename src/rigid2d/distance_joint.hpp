@@ -8,14 +8,25 @@ namespace impetus::rigid2d::detail {
 
 struct DistanceJoint {
   DistanceJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
-  // Accumulated impulses: solver state, kept from step to step for warm starting.
+  // Accumulated impulses along the axis (positive pushes the anchors apart): solver state, kept
+  // from step to step for warm starting.
   float impulse = 0.0f;      ///< rigid or spring part, N s per substep
-  float lowerImpulse = 0.0f; ///< min-length limit
-  float upperImpulse = 0.0f; ///< max-length limit
+  float lowerImpulse = 0.0f; ///< min-length limit (>= 0, pushes apart)
+  float upperImpulse = 0.0f; ///< max-length limit (>= 0, pulls together)
   float motorImpulse = 0.0f;
   // This step's constants.
-  float axialMass = 0.0f; ///< kg
-  Softness distanceSoftness;
+  float axialMass = 0.0f; ///< kg: 1 / (the inverse mass along the axis) at the step's start (the solve recomputes it
+                          ///< from the current anchors)
+  /// The spring over one substep (see springCoefficients in distance_joint.cpp): B = h omega^2
+  /// (1/s) scales the stretch, A = 2 zeta omega h + theta (h omega)^2 (dimensionless) the damping
+  /// and the implicit share of the stiffness, and relaxShare (0 to 1) how much of the spring is
+  /// applied again in the relax pass; all zero without a spring.
+  float springStiffness = 0.0f;
+  float springDamping = 0.0f;
+  float springRelaxShare = 0.0f;
+  /// The unit axis from anchor A to anchor B at the last solve (zero when the anchors coincide):
+  /// the direction of the reaction.
+  Vec2f axis;
 };
 
 void prepareJoint(DistanceJoint& joint, const JointFrame& frame, const StepContext& context);
@@ -23,7 +34,8 @@ void warmStartJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<B
                     std::uint32_t staticIndex);
 void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
-/// The force and torque on body B over the last substep (impulses times the substep rate).
+/// The force on body B over the last substep (the impulses along the axis times the substep
+/// rate); a distance joint applies no torque.
 [[nodiscard]] JointReaction jointReaction(const DistanceJoint& joint, const JointFrame& frame, float inverseH);
 
 } // namespace impetus::rigid2d::detail

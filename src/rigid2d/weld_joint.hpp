@@ -12,9 +12,10 @@ struct WeldJoint {
   Vec2f linearImpulse;         ///< N s per substep
   float angularImpulse = 0.0f; ///< N m s per substep
   // This step's constants.
-  float axialMass = 0.0f;
-  Softness linearSoftness;
-  Softness angularSoftness;
+  float axialMass = 0.0f;  ///< 1 / (iA + iB), kg m^2
+  float startAngle = 0.0f; ///< the angle error at the step's start, angleB - angleA - referenceAngle, in (-pi, pi], rad
+  Softness linearSoftness; ///< linearHertz's spring, or the world's joint softness when rigid
+  Softness angularSoftness; ///< angularHertz's spring, or the world's joint softness when rigid
 };
 
 void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& context);
@@ -22,7 +23,8 @@ void warmStartJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyS
                     std::uint32_t staticIndex);
 void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias);
-/// The force and torque on body B over the last substep (impulses times the substep rate).
+/// The force and torque on body B over the last substep (impulses times the substep rate). The
+/// torque is the joint's couple on B (its moment about the anchor), the force acts at the anchor.
 [[nodiscard]] JointReaction jointReaction(const WeldJoint& joint, const JointFrame& frame, float inverseH);
 
 } // namespace impetus::rigid2d::detail
