@@ -36,6 +36,7 @@ void prepareJoints(WorldState& w, const StepContext& context) {
     f.qB = b.transform.q;
     f.localCenterA = a.localCenter;
     f.localCenterB = b.localCenter;
+    f.centerB = b.center;
     std::visit([&](auto& data) { prepareJoint(data, f, context); }, joint.data);
     joint.solved = true;
   }

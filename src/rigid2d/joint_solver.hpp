@@ -30,6 +30,7 @@ struct JointFrame {
   float deltaAngle = 0.0f;              ///< angleB - angleA at the step's start (in (-pi, pi]), rad
   Rot2f qA, qB;                         ///< the bodies' rotations at the step's start
   Vec2f localCenterA, localCenterB;     ///< centres of mass in the body frames, m (origin = c - rotate(q, localCenter))
+  Vec2f centerB;                        ///< B's centre of mass at the step's start, world, m (the mouse joint)
 };
 
 /// The angle of qB relative to qA, in (-pi, pi].

@@ -7,13 +7,19 @@
 namespace impetus::rigid2d::detail {
 
 struct MotorJoint {
-  MotorJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  MotorJointDef def; ///< the settings (the offsets change at run time; the anchors are not used)
   // Accumulated impulses: solver state, kept from step to step for warm starting.
-  Vec2f linearImpulse;         ///< N s per substep
-  float angularImpulse = 0.0f; ///< N m s per substep
+  Vec2f linearImpulse;         ///< N s per substep, on B (at B's origin)
+  float angularImpulse = 0.0f; ///< N m s per substep, on B
   // This step's constants.
-  Mat22f linearMass;
-  float angularMass = 0.0f;
+  /// From A's centre of mass to the target point (A's origin + linearOffset, a point fixed in
+  /// A), world axes at the step's start, m.
+  Vec2f targetA;
+  /// From B's centre of mass to B's origin, world axes at the step's start, m.
+  Vec2f originB;
+  /// The angular error angleB - angleA - angularOffset at the step's start, in (-pi, pi], rad.
+  float angleError = 0.0f;
+  float angularMass = 0.0f; ///< 1 / (iA + iB), kg m^2 (0: neither body can turn)
 };
 
 void prepareJoint(MotorJoint& joint, const JointFrame& frame, const StepContext& context);

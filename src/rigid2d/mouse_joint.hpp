@@ -6,13 +6,21 @@
 
 namespace impetus::rigid2d::detail {
 
+/// The rate (1/s) of the mouse joint's angular damping: a torque -I * rate * w on the dragged
+/// body, so a body swung about the grab point stops spinning (time constant 1/rate, about 1.7 s)
+/// without a visible effect on a drag of a second or so. Box2D v3 damps likewise (a soft angular
+/// velocity constraint of 0.5 Hz, damping ratio 0.1: about 0.65/s).
+inline constexpr float mouseAngularDampingRate = 0.6f;
+
 struct MouseJoint {
-  MouseJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  MouseJointDef def; ///< the settings (the target changes at run time; localAnchorA is not used)
   // Accumulated impulses: solver state, kept from step to step for warm starting.
-  Vec2f linearImpulse; ///< N s per substep
+  Vec2f linearImpulse;         ///< N s per substep, on B at its anchor
+  float angularImpulse = 0.0f; ///< N m s per substep: the angular damping on B
   // This step's constants.
-  Mat22f linearMass;
-  Softness linearSoftness;
+  Vec2f targetOffset;      ///< B's centre of mass minus the target at the step's start, m
+  Softness linearSoftness; ///< the spring (hertz, dampingRatio)
+  Softness angularDamping; ///< the implicit angular damper (no bias)
 };
 
 void prepareJoint(MouseJoint& joint, const JointFrame& frame, const StepContext& context);
