@@ -192,7 +192,7 @@ void createContact(WorldState& w, std::uint64_t key) {
       std::max(a.rollingResistance, b.rollingResistance) * std::max(rollingRadius(a), rollingRadius(b));
   c.sensor = a.sensor || b.sensor;
   c.alive = true;
-  w.contactByPair.emplace(key, slot);
+  w.contactByPair.insert(key, slot);
 }
 
 void destroyContact(WorldState& w, std::uint32_t slot) {

@@ -12,8 +12,9 @@
 #include <impetus/rigid2d/manifold.hpp>
 #include <impetus/rigid2d/world.hpp>
 
+#include "rigid2d/pair_map.hpp"
+
 #include <memory>
-#include <unordered_map>
 #include <variant>
 #include <vector>
 
@@ -152,7 +153,7 @@ struct WorldState {
   /// by their shape pair.
   std::vector<Contact> contacts;
   std::vector<std::uint32_t> freeContacts;
-  std::unordered_map<std::uint64_t, std::uint32_t> contactByPair; ///< (shapeA << 32 | shapeB) -> slot
+  PairMap contactByPair; ///< (shapeA << 32 | shapeB) -> slot
 
   IdPool jointIds;
   std::vector<Joint> joints; ///< by id slot

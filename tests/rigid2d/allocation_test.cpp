@@ -43,6 +43,20 @@ void buildScene(World& world) {
       world.createShape(world.createBody(def), {}, makeBox(0.5f, 0.5f));
     }
   }
+  // A hanging chain: joints must not allocate either.
+  BodyId previous = ground;
+  for (int i = 0; i < 6; ++i) {
+    def.position = {-20.0f + 0.5f * static_cast<float>(i) + 0.25f, 8.0f};
+    const BodyId link = world.createBody(def);
+    world.createShape(link, {}, makeBox(0.25f, 0.05f));
+    RevoluteJointDef pin;
+    pin.bodyA = previous;
+    pin.bodyB = link;
+    pin.localAnchorA = previous == ground ? Vec2f{-20.0f, 8.0f} : Vec2f{0.25f, 0.0f};
+    pin.localAnchorB = {-0.25f, 0.0f};
+    world.createJoint(pin);
+    previous = link;
+  }
   ShapeDef bouncy;
   bouncy.restitution = 0.5f;
   for (int i = 0; i < 40; ++i) {

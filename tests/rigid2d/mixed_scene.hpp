@@ -70,6 +70,38 @@ inline std::uint64_t runMixedScene(TaskRunner* runner) {
     }
     bodies.push_back(b);
   }
+  // A chain of 10 links hanging from the left wall (revolute joints with limits), a rope and a
+  // slider, so the joints take part too.
+  BodyId previous = ground;
+  for (int i = 0; i < 10; ++i) {
+    dynamic.position = {-35.0f + 0.5f * static_cast<float>(i) + 0.25f, 20.0f};
+    const BodyId link = world.createBody(dynamic);
+    world.createShape(link, {}, makeBox(0.25f, 0.05f));
+    RevoluteJointDef pin;
+    pin.bodyA = previous;
+    pin.bodyB = link;
+    pin.localAnchorA = previous == ground ? Vec2f{-35.0f, 20.0f} : Vec2f{0.25f, 0.0f};
+    pin.localAnchorB = {-0.25f, 0.0f};
+    pin.enableLimit = true;
+    pin.lowerAngle = -1.0f;
+    pin.upperAngle = 1.0f;
+    world.createJoint(pin);
+    bodies.push_back(link);
+    previous = link;
+  }
+  dynamic.position = {-25.0f, 15.0f};
+  const BodyId weight = world.createBody(dynamic);
+  world.createShape(weight, {}, Circle{{}, 0.3f});
+  bodies.push_back(weight);
+  DistanceJointDef rope;
+  rope.bodyA = ground;
+  rope.bodyB = weight;
+  rope.localAnchorA = {-28.0f, 18.0f};
+  rope.length = 4.0f;
+  rope.enableSpring = true;
+  rope.enableLimit = true;
+  rope.maxLength = 4.5f;
+  world.createJoint(rope);
   BodyDef paddle;
   paddle.type = BodyType::kinematicBody;
   paddle.position = {15.0f, 3.0f};
