@@ -7,6 +7,7 @@
 // dp.y, dq.c, dq.s) and transposed into one FloatW per field.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #if defined(IMPETUS_SIMD_AVX2) && defined(__AVX2__)
@@ -206,7 +207,7 @@ inline void loadRowsW(const float* const (&rows)[4], FloatW (&columns)[8]) {
   for (int half = 0; half < 2; ++half) {
     FloatW r[4];
     for (int i = 0; i < 4; ++i) {
-      r[i] = loadW(rows[i] + 4 * half);
+      r[i] = loadW(rows[i] + static_cast<std::ptrdiff_t>(4 * half));
     }
     transposeW(r[0], r[1], r[2], r[3]);
     for (int i = 0; i < 4; ++i) {

@@ -19,10 +19,10 @@ namespace impetus {
 /// outlive it (a lambda passed straight to parallelFor does).
 class RangeTask {
 public:
-  template <class F>
-  requires(!std::is_same_v<std::remove_cvref_t<F>, RangeTask> && std::is_invocable_v<F&, std::uint32_t, std::uint32_t>)
-      RangeTask(F&& f)
-  noexcept // NOLINT(google-explicit-constructor): built implicitly from lambdas
+  // Implicit, from lambdas; the constraint keeps it from hiding the copy constructor.
+  template <class F, class = std::enable_if_t<!std::is_same_v<std::remove_cvref_t<F>, RangeTask> &&
+                                              std::is_invocable_v<F&, std::uint32_t, std::uint32_t>>>
+  RangeTask(F&& f) noexcept // NOLINT(google-explicit-constructor,bugprone-forwarding-reference-overload)
       : object_(const_cast<void*>(static_cast<const void*>(std::addressof(f)))),
         call_([](void* object, std::uint32_t begin, std::uint32_t end) {
           (*static_cast<std::remove_reference_t<F>*>(object))(begin, end);
