@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -163,6 +164,33 @@ private:
   std::set<std::string> known_;
 };
 
+/// "localAnchorA" -> "local_anchor_a": the library's field names as the files spell them.
+inline std::string snakeCase(const std::string& name) {
+  std::string out;
+  for (const char c : name) {
+    if (std::isupper(static_cast<unsigned char>(c)) != 0) {
+      out.push_back('_');
+      out.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+    } else {
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+/// Runs `build`, re-labelling an impetus::Error raised by the library ("mass = -1: ...") with
+/// the element's JSON path ("particles[3].mass = -1: ...").
+template <class F> auto at(const std::string& where, F&& build) {
+  try {
+    return build();
+  } catch (const Error& e) {
+    const std::string field = snakeCase(e.field());
+    const std::string message = e.what();
+    const std::string rest = message.rfind(e.field(), 0) == 0 ? message.substr(e.field().size()) : ": " + message;
+    throw Error(where + "." + field, where + "." + field + rest);
+  }
+}
+
 /// The elements of an optional top-level array.
 inline const json& arrayOf(const json& doc, const std::string& key) {
   static const json empty = json::array();
@@ -174,6 +202,18 @@ inline const json& arrayOf(const json& doc, const std::string& key) {
     fail(key, "expected an array, got " + a.dump());
   }
   return a;
+}
+
+} // namespace impetus::cli::json_fields
+
+namespace impetus::cli::json_fields {
+
+/// Calls each(element, "key[i]") for every element of the optional top-level array `key`.
+template <class F> void forEach(const json& doc, const std::string& key, F&& each) {
+  const json& items = arrayOf(doc, key);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    each(items[i], index(key, i));
+  }
 }
 
 } // namespace impetus::cli::json_fields

@@ -33,13 +33,16 @@ int main(int argc, char** argv) {
   demo->add_option("--out", demoOut, "directory to write the demo's CSV files to");
 
   auto* run = app.add_subcommand(
-      "run", "simulate a particle scene file: impetus run SCENE.json --steps N [--dt H] [--out FILE] [--every K]");
+      "run", "simulate a scene file (particles or rigid2d): impetus run SCENE.json --steps N [--dt H] [--out FILE] "
+             "[--every K] [--events FILE.csv]");
   impetus::cli::RunOptions runOptions;
-  run->add_option("scene", runOptions.scene, "scene file (JSON, docs/scene-format.md)")->required();
+  run->add_option("scene", runOptions.scene, "scene file (JSON, docs/scene-format.md, docs/scene-format-2d.md)")
+      ->required();
   run->add_option("--steps", runOptions.steps, "number of steps to take")->required();
   run->add_option("--dt", runOptions.dt, "time step, s (default 1/60)");
   run->add_option("--out", runOptions.out, "trajectory file: .csv or .json");
   run->add_option("--every", runOptions.every, "record every K-th step (default 1)");
+  run->add_option("--events", runOptions.events, "rigid2d scenes: contact and joint events, .csv");
 
   try {
     app.parse(argc, argv);

@@ -3,6 +3,9 @@
 // step) or JSON (one object per recorded step). Formats: docs/scene-format.md.
 #include "run_command.hpp"
 
+#include "json_fields.hpp"
+#include "rigid2d_run.hpp"
+#include "rigid2d_scene.hpp"
 #include "scene_file.hpp"
 
 #include <impetus/error.hpp>
@@ -202,7 +205,17 @@ bool finite(const ParticleWorld& world, const Energies& e) {
 int runScene(const RunOptions& o) {
   try {
     validate(o);
-    ParticleScene scene = loadScene(o.scene);
+    // "kind" picks the loader: particles (the default) or rigid2d (docs/scene-format-2d.md).
+    nlohmann::json doc =
+        json_fields::parseObject(json_fields::readFile(o.scene), "a JSON object (docs/scene-format.md)");
+    if (sceneKind(doc) == "rigid2d") {
+      return runRigid2dScene(o, doc);
+    }
+    if (!o.events.empty()) {
+      throw Error("--events", "--events = " + o.events + ": only rigid2d scenes have contact events");
+    }
+    doc.erase("kind");
+    ParticleScene scene = parseScene(doc.dump());
     ParticleWorld& world = scene.world;
     const auto dt = static_cast<float>(o.dt);
     std::unique_ptr<Recorder> recorder;

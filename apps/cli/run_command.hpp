@@ -1,5 +1,6 @@
 // `impetus run SCENE.json --steps N [--dt H] [--out traj.csv|traj.json] [--every K]`: simulates a
-// particle scene file (docs/scene-format.md) and writes its trajectory and energies.
+// particle scene file (docs/scene-format.md) or a 2D rigid-body scene file
+// (docs/scene-format-2d.md, [--events FILE.csv]) and writes its trajectory and energies.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,7 @@ struct RunOptions {
   double dt = 1.0 / 60.0; ///< s per step, in (0, 1] (a game frame by default)
   std::string out;        ///< .csv or .json file for the trajectory; empty: none
   std::int64_t every = 1; ///< record every K-th step (and the first and last), >= 1
+  std::string events;     ///< .csv file for a rigid2d scene's contact and joint events; empty: none
 };
 
 /// Loads the scene, steps it and writes the trajectory; prints a one-paragraph summary.

@@ -23,40 +23,15 @@ namespace impetus::cli {
 namespace {
 
 using json_fields::arrayOf;
+using json_fields::at;
 using json_fields::fail;
 using json_fields::Fields;
+using json_fields::forEach;
 using json_fields::index;
 using nlohmann::json;
 
 /// More particles than this from one file is a mistake (about 1 GB of state), not a scene.
 constexpr std::int64_t maxParticles = 10'000'000;
-
-/// "halfExtents.x" -> "half_extents.x": the library's field names as the file spells them.
-std::string snakeCase(const std::string& name) {
-  std::string out;
-  for (const char c : name) {
-    if (std::isupper(static_cast<unsigned char>(c)) != 0) {
-      out.push_back('_');
-      out.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
-    } else {
-      out.push_back(c);
-    }
-  }
-  return out;
-}
-
-/// Runs `build`, re-labelling an impetus::Error raised by the library ("mass = -1: ...") with
-/// the element's JSON path ("particles[3].mass = -1: ...").
-template <class F> auto at(const std::string& where, F&& build) {
-  try {
-    return build();
-  } catch (const Error& e) {
-    const std::string field = snakeCase(e.field());
-    const std::string message = e.what();
-    const std::string rest = message.rfind(e.field(), 0) == 0 ? message.substr(e.field().size()) : ": " + message;
-    throw Error(where + "." + field, where + "." + field + rest);
-  }
-}
 
 /// A rotation: {"axis": [x, y, z], "angle_deg": a} or {"yaw_deg", "pitch_deg", "roll_deg"}
 /// (R = Rz(yaw) Ry(pitch) Rx(roll)).
@@ -106,13 +81,6 @@ public:
   }
 
 private:
-  template <class F> static void forEach(const json& doc, const std::string& key, F&& each) {
-    const json& items = arrayOf(doc, key);
-    for (std::size_t i = 0; i < items.size(); ++i) {
-      each(items[i], index(key, i));
-    }
-  }
-
   /// A travelling gust on top of the steady wind w: w + A sin(2 pi (t / T - (u . x) / L)), with
   /// u the wind's direction (+x in still air): the air at a point varies with period T, and the
   /// pattern moves downwind at L / T. A steady wind brings a flag to a steady pose; a gust

@@ -60,7 +60,7 @@ SubmergedArea areaOf(const Outline& o) {
   Vec2f moment;
   for (int i = 1; i + 1 < o.count; ++i) {
     const Vec2f e1 = o.points[static_cast<std::size_t>(i)] - origin;
-    const Vec2f e2 = o.points[static_cast<std::size_t>(i + 1)] - origin;
+    const Vec2f e2 = o.points[static_cast<std::size_t>(i) + 1] - origin;
     const float a = 0.5f * cross(e1, e2);
     area += a;
     moment += (e1 + e2) * (a / 3.0f);

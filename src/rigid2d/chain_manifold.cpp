@@ -449,7 +449,7 @@ Manifold collideChainSegmentAndPolygon(const ChainSegment& a, const Transform2f&
       case Admission::skip:
         return {};
       case Admission::admit: {
-        const std::size_t segmentVertex = static_cast<std::size_t>(closest.segmentFeature);
+        const auto segmentVertex = static_cast<std::size_t>(closest.segmentFeature);
         const LocalPoint point{lerp(closest.onSegment, closest.onPolygon - normal * pb.radius, 0.5f),
                                closest.distance - pb.radius, featureId(3, segmentVertex, closest.polygonIndex)};
         return toWorld(normal, std::span<const LocalPoint>(&point, 1), xfA, xfB);

@@ -97,7 +97,7 @@ JointId addJoint(WorldState& w, const JointDefBase& base, detail::JointData data
   }
   Joint& j = w.joints[id.index];
   j = Joint{};
-  j.data = std::move(data);
+  j.data = data;
   j.bodyA = a;
   j.bodyB = b;
   j.localAnchorA = base.localAnchorA;

@@ -59,10 +59,10 @@ private:
   };
 
   std::int32_t allocateNode();
-  void freeNode(std::int32_t node);
+  void freeNode(std::int32_t i);
   void insertLeaf(std::int32_t leaf);
   void removeLeaf(std::int32_t leaf);
-  std::int32_t balance(std::int32_t node);
+  std::int32_t balance(std::int32_t a);
   std::int32_t findBestSibling(const AABB& box) const;
   Node& node(std::int32_t i) { return nodes_[static_cast<std::size_t>(i)]; }
   const Node& node(std::int32_t i) const { return nodes_[static_cast<std::size_t>(i)]; }

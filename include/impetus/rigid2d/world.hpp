@@ -160,7 +160,7 @@ public:
   /// Every API change below wakes the body.
   void setTransform(BodyId id, const Vec2f& position, float angle);
   void setLinearVelocity(BodyId id, const Vec2f& v);
-  void setAngularVelocity(BodyId id, float w);
+  void setAngularVelocity(BodyId id, float av);
   /// A force (N) at a world point, acting during the next step.
   void applyForce(BodyId id, const Vec2f& force, const Vec2f& point);
   void applyTorque(BodyId id, float torque);
