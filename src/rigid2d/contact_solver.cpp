@@ -91,6 +91,18 @@ BodiesW gather(const std::vector<BodyState>& states, const std::array<std::uint3
   return {columns[0], columns[1], columns[2], columns[4], columns[5], columns[6], columns[7]};
 }
 
+/// Velocities only (warm start and restitution need no position deltas).
+BodiesW gatherVelocities(const std::vector<BodyState>& states, const std::array<std::uint32_t, simdWidth>& index) {
+  const float* rows[simdWidth];
+  for (std::size_t i = 0; i < simdWidth; ++i) {
+    rows[i] = &states[index[i]].v.x;
+  }
+  BodiesW b;
+  FloatW unused;
+  loadRowHeadsW(rows, b.vx, b.vy, b.w, unused);
+  return b;
+}
+
 /// Writes the velocities back, except to the static state.
 void scatter(std::vector<BodyState>& states, const std::array<std::uint32_t, simdWidth>& index,
              std::uint32_t staticIndex, const BodiesW& b) {
@@ -146,7 +158,7 @@ int findColour(ContactSolverData& d, std::uint32_t a, std::uint32_t b, std::uint
 
 /// Fills one constraint (or one lane) from its contact: anchors relative to the centres of mass,
 /// effective masses, and the approach speed before the step.
-ContactConstraint makeConstraint(const WorldState& w, const Contact& contact, std::uint32_t slot,
+ContactConstraint makeConstraint(const WorldState& w, Contact& contact, std::uint32_t slot,
                                  const ContactSolverData& d) {
   const Body& a = w.bodies[contact.bodyA];
   const Body& b = w.bodies[contact.bodyB];
@@ -192,6 +204,7 @@ ContactConstraint makeConstraint(const WorldState& w, const Contact& contact, st
     const Vec2f vA = stA.v + cross(stA.w, p.rA);
     const Vec2f vB = stB.v + cross(stB.w, p.rB);
     p.relativeVelocity = dot(vB - vA, m.normal);
+    contact.approachBefore[static_cast<std::size_t>(k)] = -p.relativeVelocity;
   }
   return c;
 }
@@ -403,8 +416,8 @@ void solveWide(ContactConstraintWide& c, std::vector<BodyState>& states, std::ui
 }
 
 void warmStartWide(ContactConstraintWide& c, std::vector<BodyState>& states, std::uint32_t staticIndex) {
-  BodiesW a = gather(states, c.indexA);
-  BodiesW b = gather(states, c.indexB);
+  BodiesW a = gatherVelocities(states, c.indexA);
+  BodiesW b = gatherVelocities(states, c.indexB);
   const FloatW tx = c.normalY;
   const FloatW ty = -c.normalX;
   for (const ContactConstraintWide::Point& p : c.points) {
@@ -423,8 +436,8 @@ void restitutionWide(ContactConstraintWide& c, std::vector<BodyState>& states, s
   if (!anyNonZeroW(c.restitution)) {
     return; // nothing bounces in this batch (the common case): skip the gather and scatter
   }
-  BodiesW a = gather(states, c.indexA);
-  BodiesW b = gather(states, c.indexB);
+  BodiesW a = gatherVelocities(states, c.indexA);
+  BodiesW b = gatherVelocities(states, c.indexB);
   const FloatW zero = zeroW();
   const FloatW minusThreshold = splatW(-threshold);
   for (ContactConstraintWide::Point& p : c.points) {
@@ -471,10 +484,10 @@ void restitutionOne(ContactConstraint& c, std::vector<BodyState>& states, std::u
 }
 
 /// Notes the fastest impact for hit events and keeps the impulses for the next warm start.
-void storePoint(Contact& contact, int k, float normalImpulse, float tangentImpulse, float maxNormalImpulse,
-                float relativeVelocity) {
-  if (maxNormalImpulse > 0.0f && -relativeVelocity > contact.approachSpeed) {
-    contact.approachSpeed = -relativeVelocity;
+void storePoint(Contact& contact, int k, float normalImpulse, float tangentImpulse, float maxNormalImpulse) {
+  const float approach = contact.approachBefore[static_cast<std::size_t>(k)];
+  if (maxNormalImpulse > 0.0f && approach > contact.approachSpeed) {
+    contact.approachSpeed = approach;
     contact.fastestPoint = k;
   }
   ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(k)];
@@ -625,7 +638,7 @@ void storeImpulses(WorldState& w) {
     contact.rollingImpulse = c.rollingImpulse;
     for (int k = 0; k < c.pointCount; ++k) {
       const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-      storePoint(contact, k, p.normalImpulse, p.tangentImpulse, p.maxNormalImpulse, p.relativeVelocity);
+      storePoint(contact, k, p.normalImpulse, p.tangentImpulse, p.maxNormalImpulse);
     }
   }
   w.parallelFor(static_cast<std::uint32_t>(d.wide.size()), 64, [&](std::uint32_t begin, std::uint32_t end) {
@@ -640,8 +653,7 @@ void storeImpulses(WorldState& w) {
         contact.rollingImpulse = lane(wc.rollingImpulse, i);
         for (int k = 0; k < contact.manifold.pointCount; ++k) {
           const ContactConstraintWide::Point& p = wc.points[static_cast<std::size_t>(k)];
-          storePoint(contact, k, lane(p.normalImpulse, i), lane(p.tangentImpulse, i), lane(p.maxNormalImpulse, i),
-                     lane(p.relativeVelocity, i));
+          storePoint(contact, k, lane(p.normalImpulse, i), lane(p.tangentImpulse, i), lane(p.maxNormalImpulse, i));
         }
       }
     }

@@ -224,7 +224,8 @@ Manifold collidePolygons(const Polygon& a, const Transform2f& xfA, const Polygon
                             incident.vertices[static_cast<std::size_t>(i2)]};
   std::array<int, 2> clipId{i1, i2};
   // Clip the incident edge to the reference face's side planes.
-  const Vec2f tangent = normalize(v2 - v1);
+  // The edge's direction: the outward normal of a counter-clockwise edge is (t.y, -t.x).
+  const Vec2f tangent{-n.y, n.x};
   const auto clipTo = [&](float offsetAlong, float sign) {
     // Keep the part where sign * (dot(tangent, p) - offsetAlong) <= 0.
     const float d0 = sign * (dot(tangent, clip[0]) - offsetAlong);

@@ -97,6 +97,22 @@ inline void storeRowHeadsW(float* const (&rows)[8], FloatW c0, FloatW c1, FloatW
   }
 }
 
+/// The first four floats of eight rows into four columns (velocities only: warm start, bounce).
+inline void loadRowHeadsW(const float* const (&rows)[8], FloatW& c0, FloatW& c1, FloatW& c2, FloatW& c3) {
+  __m128 lo[4];
+  __m128 hi[4];
+  for (int i = 0; i < 4; ++i) {
+    lo[i] = _mm_loadu_ps(rows[i]);
+    hi[i] = _mm_loadu_ps(rows[4 + i]);
+  }
+  _MM_TRANSPOSE4_PS(lo[0], lo[1], lo[2], lo[3]);
+  _MM_TRANSPOSE4_PS(hi[0], hi[1], hi[2], hi[3]);
+  c0.v = _mm256_insertf128_ps(_mm256_castps128_ps256(lo[0]), hi[0], 1);
+  c1.v = _mm256_insertf128_ps(_mm256_castps128_ps256(lo[1]), hi[1], 1);
+  c2.v = _mm256_insertf128_ps(_mm256_castps128_ps256(lo[2]), hi[2], 1);
+  c3.v = _mm256_insertf128_ps(_mm256_castps128_ps256(lo[3]), hi[3], 1);
+}
+
 #elif defined(IMPETUS_SIMD_SSE2)
 
 inline constexpr int simdWidth = 4;
@@ -214,6 +230,15 @@ inline void loadRowsW(const float* const (&rows)[4], FloatW (&columns)[8]) {
       columns[4 * half + i] = r[i];
     }
   }
+}
+
+/// The first four floats of four rows into four columns (velocities only: warm start, bounce).
+inline void loadRowHeadsW(const float* const (&rows)[4], FloatW& c0, FloatW& c1, FloatW& c2, FloatW& c3) {
+  c0 = loadW(rows[0]);
+  c1 = loadW(rows[1]);
+  c2 = loadW(rows[2]);
+  c3 = loadW(rows[3]);
+  transposeW(c0, c1, c2, c3);
 }
 
 /// Writes columns c0..c3 as the first four floats of each row (null rows are skipped).

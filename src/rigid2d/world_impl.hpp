@@ -14,6 +14,7 @@
 
 #include "rigid2d/pair_map.hpp"
 
+#include <array>
 #include <memory>
 #include <variant>
 #include <vector>
@@ -93,6 +94,9 @@ struct Contact {
   float rollingResistance = 0.0f; ///< m (torque per unit normal force)
   float rollingImpulse = 0.0f;    ///< solver state, N m s (warm start)
   float approachSpeed = 0.0f;     ///< the solver's fastest impact this step, m/s (for hit events)
+  /// Each point's normal approach speed before the step (m/s, positive approaching): what a hit
+  /// event reports, unaffected by the order the points are solved in.
+  std::array<float, 2> approachBefore{};
   int fastestPoint = 0;
   bool sensor = false; ///< either shape is a sensor: events only, no response
   bool alive = false;

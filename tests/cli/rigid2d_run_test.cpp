@@ -261,7 +261,8 @@ TEST(Rigid2dRun, floating_boxes_settle_at_the_depth_archimedes_predicts) {
   const CliRun run = impetus({"run", scene("buoyancy.json"), "--steps", "600", "--every", "600", "--out", out});
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_NE(run.out.find("1 effector"), std::string::npos) << run.out;
-  const auto& end = byStep(readCsv(out)).at(600);
+  const auto steps = byStep(readCsv(out));
+  const auto& end = steps.at(600);
   // A 2 m x 1 m box of density rho in water of 1000 kg/m^2 floats level with rho / 1000 of its
   // height under: its centre at y = 0.5 - rho / 1000.
   for (const auto& [box, density] : std::map<std::string, double>{{"box250", 250}, {"box500", 500}, {"box750", 750}}) {
