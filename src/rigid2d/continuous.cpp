@@ -42,6 +42,31 @@ float coreRadius(const WorldState& w, const Body& b) {
   return core == std::numeric_limits<float>::max() ? 0.0f : std::max(core, 0.0f);
 }
 
+/// Whether a moving body may collide with a shape at all: some shape of the body passes the
+/// shape's filter, and no joint between them turns their collision off.
+bool mayCollide(const WorldState& w, const Body& b, const Shape& other) {
+  if (other.sensor || w.jointBlocksCollision(b.id.index, other.body)) {
+    return false;
+  }
+  return std::any_of(b.shapes.begin(), b.shapes.end(), [&](std::uint32_t slot) {
+    const Shape& mine = w.shapes[slot];
+    return !mine.sensor && shouldCollide(mine.filter, other.filter);
+  });
+}
+
+/// A one-sided chain segment stops only what comes from its free side: whether the motion
+/// starting at `start` (world) begins behind it.
+bool behindChain(const Shape& s, const Transform2f& xf, const Vec2f& start) {
+  const auto* chain = std::get_if<ChainSegment>(&s.geometry);
+  if (chain == nullptr) {
+    return false;
+  }
+  const Vec2f local = inverseTransformPoint(xf, start);
+  const Vec2f edge = chain->segment.point2 - chain->segment.point1;
+  const Vec2f freeSide{edge.y, -edge.x}; // rightPerp: the free side (chain.hpp)
+  return dot(freeSide, local - chain->segment.point1) < 0.0f;
+}
+
 } // namespace
 
 /// Continuous collision against static shapes: a body that moved more than its core radius this
@@ -59,7 +84,7 @@ Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start,
   w.staticTree.query(swept, [&](std::int32_t, std::uint64_t slot64) {
     const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
     const Body& other = w.bodies[s.body];
-    if (other.type != BodyType::staticBody || s.sensor) {
+    if (other.type != BodyType::staticBody || !mayCollide(w, b, s) || behindChain(s, other.transform, start)) {
       return true;
     }
     const Transform2f& xf = other.transform;
@@ -115,7 +140,8 @@ bool sweepBullet(WorldState& w, Body& b, const Vec2f& startCenter, const Rot2f& 
       const Shape& other = w.shapes[static_cast<std::size_t>(other64)];
       const Body& otherBody = w.bodies[other.body];
       if (other.body == bulletShape.body || other.sensor || otherBody.bullet ||
-          !shouldCollide(bulletShape.filter, other.filter)) {
+          !shouldCollide(bulletShape.filter, other.filter) || w.jointBlocksCollision(bulletShape.body, other.body) ||
+          behindChain(other, otherBody.transform, startCenter)) {
         return true; // bullets do not sweep against each other (as Box2D)
       }
       // The other body stands at its end-of-step place.

@@ -208,7 +208,13 @@ void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyS
       applyAxial(a, b, frame, g, joint.motorImpulse - old);
     }
     if (def.enableLimit) {
-      solveLimit(joint.lowerImpulse, g.length - def.minLength, 1.0f, a, b, frame, g, mass, context, useBias);
+      // A minimum of (about) zero enforces nothing a length could break; acting on it would stop
+      // a body passing through the other anchor (a rope's end swinging past its pin).
+      if (def.minLength > linearSlop) {
+        solveLimit(joint.lowerImpulse, g.length - def.minLength, 1.0f, a, b, frame, g, mass, context, useBias);
+      } else {
+        joint.lowerImpulse = 0.0f;
+      }
       if (std::isfinite(def.maxLength)) { // the default infinity: no upper limit
         solveLimit(joint.upperImpulse, def.maxLength - g.length, -1.0f, a, b, frame, g, mass, context, useBias);
       }

@@ -21,28 +21,30 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
 /// A sleeping body touched by a moving one, or joined to one, wakes up (before the solve, so it
 /// takes part).
 void wakeTouched(WorldState& w) {
-  for (const Joint& joint : w.joints) {
-    if (!joint.alive) {
-      continue;
-    }
-    Body& a = w.bodies[joint.bodyA];
-    Body& b = w.bodies[joint.bodyB];
+  // A wake spreads through a sleeping stack or ragdoll one contact or joint at a time: repeat
+  // until nothing new wakes (almost always one pass, which finds nothing to do).
+  const auto wakeOther = [](Body& a, Body& b) {
     if (a.moving() && b.alive && b.type != BodyType::staticBody && !b.awake) {
       b.wake();
-    } else if (b.moving() && a.alive && a.type != BodyType::staticBody && !a.awake) {
-      a.wake();
+      return true;
     }
-  }
-  for (const Contact& contact : w.contacts) {
-    if (!contact.alive || contact.sensor || contact.manifold.pointCount == 0) {
-      continue;
-    }
-    Body& a = w.bodies[contact.bodyA];
-    Body& b = w.bodies[contact.bodyB];
-    if (a.moving() && b.alive && b.type != BodyType::staticBody && !b.awake) {
-      b.wake();
-    } else if (b.moving() && a.alive && a.type != BodyType::staticBody && !a.awake) {
+    if (b.moving() && a.alive && a.type != BodyType::staticBody && !a.awake) {
       a.wake();
+      return true;
+    }
+    return false;
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const Joint& joint : w.joints) {
+      if (joint.alive) {
+        changed = wakeOther(w.bodies[joint.bodyA], w.bodies[joint.bodyB]) || changed;
+      }
+    }
+    for (const Contact& contact : w.contacts) {
+      if (contact.alive && !contact.sensor && contact.manifold.pointCount > 0) {
+        changed = wakeOther(w.bodies[contact.bodyA], w.bodies[contact.bodyB]) || changed;
+      }
     }
   }
 }

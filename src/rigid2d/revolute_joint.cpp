@@ -9,13 +9,15 @@
 #include "rigid2d/revolute_joint.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace impetus::rigid2d::detail {
 namespace {
 
-/// The joint angle now: at the step's start plus what the bodies turned since.
-float jointAngle(const JointFrame& f, const BodyState& a, const BodyState& b) {
-  return unwindAngle(f.deltaAngle + relativeAngle(b.dq, a.dq));
+/// The joint angle now (angleB - angleA - referenceAngle, in (-pi, pi]): at the step's start plus
+/// what the bodies turned since.
+float jointAngle(const RevoluteJoint& joint, const BodyState& a, const BodyState& b) {
+  return unwindAngle(joint.angleAtStart + relativeAngle(b.dq, a.dq));
 }
 
 /// An angular impulse on the relative spin: -impulse on A, +impulse on B.
@@ -50,6 +52,8 @@ void solveLimit(float& accumulated, float c, float direction, BodyState& a, Body
 void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepContext& context) {
   const float k = frame.iA + frame.iB;
   joint.axialMass = k > 0.0f ? 1.0f / k : 0.0f;
+  joint.angleAtStart = static_cast<float>(
+      std::remainder(static_cast<double>(frame.deltaAngle) - joint.def.referenceAngle, 2.0 * 3.14159265358979));
   joint.springSoftness = makeSoft(joint.def.hertz, joint.def.dampingRatio, context.h);
   // What is switched off holds no impulse (it would be warm started otherwise).
   if (!joint.def.enableSpring) {
@@ -91,7 +95,7 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
   const bool canTurn = joint.axialMass > 0.0f;
 
   if (def.enableSpring && canTurn) {
-    const float c = jointAngle(frame, a, b);
+    const float c = jointAngle(joint, a, b);
     const Softness& soft = joint.springSoftness;
     const float impulse =
         -soft.massScale * joint.axialMass * (b.w - a.w + soft.biasRate * c) - soft.impulseScale * joint.springImpulse;
@@ -111,7 +115,7 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
     applyAngular(a, b, frame, joint.frictionImpulse - old);
   }
   if (def.enableLimit && canTurn) {
-    const float angle = jointAngle(frame, a, b);
+    const float angle = jointAngle(joint, a, b);
     solveLimit(joint.lowerImpulse, angle - def.lowerAngle, 1.0f, a, b, frame, joint.axialMass, context, useBias);
     solveLimit(joint.upperImpulse, def.upperAngle - angle, -1.0f, a, b, frame, joint.axialMass, context, useBias);
   }

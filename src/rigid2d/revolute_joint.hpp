@@ -16,7 +16,8 @@ struct RevoluteJoint {
   float upperImpulse = 0.0f;
   float frictionImpulse = 0.0f;
   // This step's constants.
-  float axialMass = 0.0f; ///< 1 / (iA + iB), kg m^2
+  float axialMass = 0.0f;    ///< 1 / (iA + iB), kg m^2
+  float angleAtStart = 0.0f; ///< the joint angle (angleB - angleA - referenceAngle) at the step's start, rad
   Softness springSoftness;
 };
 

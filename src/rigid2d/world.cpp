@@ -195,13 +195,6 @@ void createContact(WorldState& w, std::uint64_t key) {
   w.contactByPair.insert(key, slot);
 }
 
-void destroyContact(WorldState& w, std::uint32_t slot) {
-  Contact& c = w.contacts[slot];
-  w.contactByPair.erase(pairKey(c.shapeA, c.shapeB));
-  c.alive = false;
-  w.freeContacts.push_back(slot);
-}
-
 /// Finds new pairs for the shapes whose fat boxes were (re)inserted, and drops contacts whose
 /// fat boxes no longer overlap.
 void updatePairs(WorldState& w) {
@@ -245,8 +238,12 @@ void updatePairs(WorldState& w) {
   for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
     const Contact& c = w.contacts[slot];
     if (c.alive && !overlaps(w.shapes[c.shapeA].fatBox, w.shapes[c.shapeB].fatBox)) {
-      reportEnd(w, c, w.contactEvents, w.sensorEvents);
-      destroyContact(w, slot);
+      if (c.manifold.pointCount > 0) {
+        // A support went away (teleported, say): what rested on it must fall.
+        w.bodies[c.bodyA].wake();
+        w.bodies[c.bodyB].wake();
+      }
+      detail::destroyContact(w, slot, w.contactEvents, w.sensorEvents);
     }
   }
 }
@@ -333,6 +330,15 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
   requirePositive(def.maxContactPushSpeed, "maxContactPushSpeed");
   requireNonNegative(def.restitutionThreshold, "restitutionThreshold");
   requirePositive(def.maxLinearSpeed, "maxLinearSpeed");
+  requireNonNegative(def.jointHertz, "jointHertz");
+  requireNonNegative(def.jointDampingRatio, "jointDampingRatio");
+  requireNonNegative(def.hitEventThreshold, "hitEventThreshold");
+  requireNonNegative(def.timeToSleep, "timeToSleep");
+  requireNonNegative(def.sleepLinearTolerance, "sleepLinearTolerance");
+  requireNonNegative(def.sleepAngularTolerance, "sleepAngularTolerance");
+  if (def.solver != SolverKind::softStep && def.solver != SolverKind::bookImpulse) {
+    throwInvalid("solver", static_cast<int>(def.solver), "unknown solver kind");
+  }
   impl_->def = def;
 }
 World::~World() = default;
@@ -359,7 +365,7 @@ BodyId World::createBody(const BodyDef& def) {
   b.type = def.type;
   b.transform = {def.position, Rot2f::fromAngle(def.angle)};
   b.linearVelocity = def.type == BodyType::staticBody ? Vec2f{} : def.linearVelocity;
-  b.angularVelocity = def.type == BodyType::staticBody ? 0.0f : def.angularVelocity;
+  b.angularVelocity = (def.type == BodyType::staticBody || def.fixedRotation) ? 0.0f : def.angularVelocity;
   b.linearDamping = def.linearDamping;
   b.angularDamping = def.angularDamping;
   b.gravityScale = def.gravityScale;
@@ -386,9 +392,8 @@ void World::destroyBody(BodyId id) {
     if (!c.alive || (c.bodyA != bodySlot && c.bodyB != bodySlot)) {
       continue;
     }
-    reportEnd(w, c, w.pendingEvents, w.pendingSensorEvents);
     w.bodies[c.bodyA == bodySlot ? c.bodyB : c.bodyA].wake(); // what rested on it must fall
-    destroyContact(w, slot);
+    detail::destroyContact(w, slot, w.pendingEvents, w.pendingSensorEvents);
   }
   for (std::uint32_t slot : b.shapes) {
     Shape& s = w.shapes[slot];
@@ -526,8 +531,16 @@ void World::setMassData(BodyId id, const MassData& massData) {
 void World::setTransform(BodyId id, const Vec2f& position, float angle) {
   requireFinite(position, "position");
   requireFinite(angle, "angle");
-  Body& b = impl_->body(id);
+  Impl& w = *impl_;
+  Body& b = w.body(id);
   b.wake();
+  // What touches it (rests on it, or is pushed by it) reacts too.
+  for (const Contact& c : w.contacts) {
+    if (c.alive && c.manifold.pointCount > 0 && (c.bodyA == id.index || c.bodyB == id.index)) {
+      w.bodies[c.bodyA].wake();
+      w.bodies[c.bodyB].wake();
+    }
+  }
   b.transform = {position, Rot2f::fromAngle(angle)};
   b.center = transformPoint(b.transform, b.localCenter);
   synchronizeShapes(*impl_, b);
@@ -594,7 +607,9 @@ void World::step(float dt) {
     detail::solve(w, dt);
   }
   for (const Contact& contact : w.contacts) {
-    if (contact.alive && !contact.sensor && contact.manifold.pointCount > 0 &&
+    // A resting contact approaches at a few um/s of round-off: a hit needs a real approach.
+    constexpr float restingSpeed = 1e-3f; // m/s
+    if (contact.alive && !contact.sensor && contact.manifold.pointCount > 0 && contact.approachSpeed > restingSpeed &&
         contact.approachSpeed >= w.def.hitEventThreshold &&
         (w.bodies[contact.bodyA].moving() || w.bodies[contact.bodyB].moving())) {
       const ManifoldPoint& p = contact.manifold.points[static_cast<std::size_t>(contact.fastestPoint)];
@@ -654,5 +669,17 @@ std::size_t World::awakeBodyCount() const noexcept {
 
 const ContactEvents& World::contactEvents() const noexcept { return impl_->contactEvents; }
 const SensorEvents& World::sensorEvents() const noexcept { return impl_->sensorEvents; }
+
+namespace detail {
+
+void destroyContact(WorldState& w, std::uint32_t slot, ContactEvents& events, SensorEvents& sensors) {
+  Contact& c = w.contacts[slot];
+  reportEnd(w, c, events, sensors);
+  w.contactByPair.erase(pairKey(c.shapeA, c.shapeB));
+  c.alive = false;
+  w.freeContacts.push_back(slot);
+}
+
+} // namespace detail
 
 } // namespace impetus::rigid2d

@@ -235,6 +235,9 @@ struct StepContext {
 /// The shape as GJK sees it (its core points and radius), in the body frame.
 [[nodiscard]] ShapeProxy shapeProxy(const Shape& s);
 
+/// Frees a contact; one that touched reports its end to `events` (or `sensors`).
+void destroyContact(WorldState& w, std::uint32_t slot, ContactEvents& events, SensorEvents& sensors);
+
 /// A shape's world bounding box.
 [[nodiscard]] AABB shapeBox(const Shape& s, const Transform2f& xf);
 

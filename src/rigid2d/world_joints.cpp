@@ -72,6 +72,19 @@ void validateLimits(float lower, float upper, const char* lowerField) {
   }
 }
 
+/// The joint angle lives in (-pi, pi] (it is measured from the bodies' rotations), so limits
+/// beyond half a turn could never be told apart from their wrap-around.
+void validateRevoluteLimits(float lower, float upper) {
+  validateLimits(lower, upper, "lowerAngle");
+  constexpr float pi = 3.14159265f;
+  if (lower < -pi) {
+    throwInvalid("lowerAngle", lower, "must be >= -pi");
+  }
+  if (upper > pi) {
+    throwInvalid("upperAngle", upper, "must be <= pi");
+  }
+}
+
 Vec2f unitAxis(const Vec2f& axis) {
   requireFinite(axis, "localAxisA");
   const float len = length(axis);
@@ -84,8 +97,8 @@ Vec2f unitAxis(const Vec2f& axis) {
 JointId addJoint(WorldState& w, const JointDefBase& base, detail::JointData data, bool needsBodyA = true) {
   validateBase(base);
   const std::uint32_t b = jointBody(w, base.bodyB, "bodyB");
-  std::uint32_t a = b;
-  if (needsBodyA || !base.bodyA.isNull()) {
+  std::uint32_t a = b; // a joint to the world (the mouse joint) ignores bodyA
+  if (needsBodyA) {
     a = jointBody(w, base.bodyA, "bodyA");
     if (a == b) {
       throwInvalid("bodyB", static_cast<double>(b), "a joint needs two different bodies");
@@ -117,13 +130,12 @@ JointId addJoint(WorldState& w, const JointDefBase& base, detail::JointData data
   bodyA.wake();
   bodyB.wake();
   if (!j.collideConnected && a != b) {
-    // The two bodies stop colliding: their contacts go (without events: nothing separated).
+    // The two bodies stop colliding: their contacts go, and those that touched report their
+    // end with the next step's events.
     for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
       const detail::Contact& c = w.contacts[slot];
       if (c.alive && ((c.bodyA == a && c.bodyB == b) || (c.bodyA == b && c.bodyB == a))) {
-        w.contactByPair.erase((std::uint64_t{c.shapeA} << 32) | c.shapeB);
-        w.contacts[slot].alive = false;
-        w.freeContacts.push_back(slot);
+        detail::destroyContact(w, slot, w.pendingEvents, w.pendingSensorEvents);
       }
     }
   }
@@ -161,7 +173,7 @@ std::pair<Vec2f, Vec2f> worldAnchors(const WorldState& w, const Joint& j) {
 JointId World::createJoint(const RevoluteJointDef& def) {
   requireFinite(def.referenceAngle, "referenceAngle");
   if (def.enableLimit) {
-    validateLimits(def.lowerAngle, def.upperAngle, "lowerAngle");
+    validateRevoluteLimits(def.lowerAngle, def.upperAngle);
   }
   requireFinite(def.motorSpeed, "motorSpeed");
   requireNonNegative(def.maxMotorTorque, "maxMotorTorque");
@@ -280,9 +292,8 @@ const JointEvents& World::jointEvents() const noexcept { return impl_->jointEven
 float World::revoluteAngle(JointId id) const {
   const auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
   const Joint& j = impl_->joint(id);
-  return detail::unwindAngle(
-      detail::relativeAngle(impl_->bodies[j.bodyB].transform.q, impl_->bodies[j.bodyA].transform.q) -
-      r.def.referenceAngle);
+  const double angle = detail::relativeAngle(impl_->bodies[j.bodyB].transform.q, impl_->bodies[j.bodyA].transform.q);
+  return static_cast<float>(std::remainder(angle - r.def.referenceAngle, 2.0 * 3.14159265358979));
 }
 
 float World::revoluteMotorTorque(JointId id) const {
@@ -300,7 +311,7 @@ void World::setRevoluteMotor(JointId id, bool enable, float speed, float maxTorq
 }
 
 void World::setRevoluteLimit(JointId id, bool enable, float lower, float upper) {
-  validateLimits(lower, upper, "lowerAngle");
+  validateRevoluteLimits(lower, upper);
   auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
   r.def.enableLimit = enable;
   r.def.lowerAngle = lower;

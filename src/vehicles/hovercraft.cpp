@@ -25,6 +25,9 @@ Hovercraft::Hovercraft(rigid2d::World& world, const HovercraftParams& params, co
   if (params.minThrust > params.maxThrust) {
     throwInvalid("minThrust", params.minThrust, "above maxThrust");
   }
+  if (!(params.restitution >= 0.0f && params.restitution <= 1.0f)) {
+    throwInvalid("restitution", params.restitution, "must be in [0, 1]");
+  }
   requireFinite(params.centreOfDrag, "centreOfDrag");
   requireFinite(params.portThrusterPoint, "portThrusterPoint");
   requireFinite(params.starboardThrusterPoint, "starboardThrusterPoint");

@@ -97,6 +97,10 @@ TEST(Hovercraft, bad_parameters_name_the_field) {
   params = {};
   params.minThrust = 20.0f;
   expectErrorField([&] { Hovercraft craft(world, params, {}, 0.0f); }, "minThrust");
+  params = {};
+  params.restitution = 2.0f;
+  expectErrorField([&] { Hovercraft craft(world, params, {}, 0.0f); }, "restitution");
+  EXPECT_EQ(world.bodyCount(), 0U) << "a failed craft leaves nothing behind";
 }
 
 } // namespace

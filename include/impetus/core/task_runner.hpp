@@ -55,6 +55,8 @@ public:
 
 /// A TaskRunner over a fixed pool of std::threads; the calling thread works too. Idle workers
 /// spin briefly for the next loop (a step runs hundreds of short loops) and then sleep.
+/// It runs one loop at a time: call parallelFor from one thread at a time (worlds stepped on
+/// different threads need a pool each) and never from inside a task.
 class ThreadPool final : public TaskRunner {
 public:
   /// threadCount >= 1 threads in all, the caller's included (1: everything on the caller).

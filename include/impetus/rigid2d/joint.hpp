@@ -47,8 +47,8 @@ struct JointDefBase {
 struct RevoluteJointDef : JointDefBase {
   float referenceAngle = 0.0f; ///< rad: angleB - angleA when the joint angle is zero
   bool enableLimit = false;
-  float lowerAngle = 0.0f; ///< rad, <= upperAngle
-  float upperAngle = 0.0f; ///< rad
+  float lowerAngle = 0.0f; ///< rad, in [-pi, pi] and <= upperAngle (the joint angle lives in (-pi, pi])
+  float upperAngle = 0.0f; ///< rad, in [-pi, pi]
   bool enableMotor = false;
   float motorSpeed = 0.0f;     ///< rad/s of B relative to A
   float maxMotorTorque = 0.0f; ///< N m, >= 0
@@ -115,17 +115,17 @@ struct WheelJointDef : JointDefBase {
 
 /// Drives B toward a target position and angle relative to A (`linearOffset` in A's frame, m;
 /// `angularOffset`, rad) with at most maxForce and maxTorque: for characters and top-down
-/// friction. The anchors are not used.
+/// friction. The anchors are not used. correctionFactor is per substep.
 struct MotorJointDef : JointDefBase {
   Vec2f linearOffset;            ///< m, B's origin relative to A's, in A's frame
   float angularOffset = 0.0f;    ///< rad, angleB - angleA
   float maxForce = 1.0f;         ///< N, >= 0
   float maxTorque = 1.0f;        ///< N m, >= 0
-  float correctionFactor = 0.3f; ///< fraction of the position error closed per step, 0 to 1
+  float correctionFactor = 0.3f; ///< fraction of the position error closed per substep, 0 to 1
 };
 
 /// Drags a point of B (localAnchorB) toward a world target with a soft spring of at most
-/// maxForce: a mouse or a finger. bodyA is unused (leave it null).
+/// maxForce: a mouse or a finger. bodyA is ignored: B is pulled toward the world.
 struct MouseJointDef : JointDefBase {
   Vec2f target;       ///< m, world
   float hertz = 5.0f; ///< Hz

@@ -78,7 +78,7 @@ struct WorldDef {
   float jointDampingRatio = 2.0f;
   float restitutionThreshold = 1.0f;    ///< m/s: slower impacts do not bounce
   float maxLinearSpeed = 400.0f;        ///< m/s
-  float hitEventThreshold = 1.0f;       ///< m/s: impacts at least this fast raise a hit event
+  float hitEventThreshold = 1.0f;       ///< m/s: impacts at least this fast (and over 1 mm/s) raise a hit event
   bool enableSleep = true;              ///< islands at rest fall asleep and cost (almost) nothing
   float timeToSleep = 0.5f;             ///< s an island must stay slow to fall asleep
   float sleepLinearTolerance = 0.05f;   ///< m/s
