@@ -8,10 +8,37 @@
 namespace impetus::rigid2d::detail {
 namespace {
 
+/// Whether a moving body may collide with a shape at all: some shape of the body passes the
+/// shape's filter, and no joint between them turns their collision off.
+bool mayCollide(const WorldState& w, const Body& b, const Shape& other) {
+  if (other.sensor || w.jointBlocksCollision(b.id.index, other.body)) {
+    return false;
+  }
+  return std::any_of(b.shapes.begin(), b.shapes.end(), [&](std::uint32_t slot) {
+    const Shape& mine = w.shapes[slot];
+    return !mine.sensor && shouldCollide(mine.filter, other.filter);
+  });
+}
+
+/// A one-sided chain segment stops only what comes from its free side: whether the motion
+/// starting at `start` (world) begins behind it.
+bool behindChain(const Shape& s, const Transform2f& xf, const Vec2f& start) {
+  const auto* chain = std::get_if<ChainSegment>(&s.geometry);
+  if (chain == nullptr) {
+    return false;
+  }
+  const Vec2f local = inverseTransformPoint(xf, start);
+  const Vec2f edge = chain->segment.point2 - chain->segment.point1;
+  const Vec2f freeSide{edge.y, -edge.x}; // rightPerp: the free side (chain.hpp)
+  return dot(freeSide, local - chain->segment.point1) < 0.0f;
+}
+
+} // namespace
+
 /// The radius of the largest circle around the centre of mass inside all of the body's shapes
 /// that contain it (its core): a swept circle of this radius cannot pass through anything the
 /// body would collide with.
-float coreRadius(const WorldState& w, const Body& b) {
+float computeCoreRadius(const WorldState& w, const Body& b) {
   float core = std::numeric_limits<float>::max();
   for (std::uint32_t slot : b.shapes) {
     const Shape& s = w.shapes[slot];
@@ -42,39 +69,12 @@ float coreRadius(const WorldState& w, const Body& b) {
   return core == std::numeric_limits<float>::max() ? 0.0f : std::max(core, 0.0f);
 }
 
-/// Whether a moving body may collide with a shape at all: some shape of the body passes the
-/// shape's filter, and no joint between them turns their collision off.
-bool mayCollide(const WorldState& w, const Body& b, const Shape& other) {
-  if (other.sensor || w.jointBlocksCollision(b.id.index, other.body)) {
-    return false;
-  }
-  return std::any_of(b.shapes.begin(), b.shapes.end(), [&](std::uint32_t slot) {
-    const Shape& mine = w.shapes[slot];
-    return !mine.sensor && shouldCollide(mine.filter, other.filter);
-  });
-}
-
-/// A one-sided chain segment stops only what comes from its free side: whether the motion
-/// starting at `start` (world) begins behind it.
-bool behindChain(const Shape& s, const Transform2f& xf, const Vec2f& start) {
-  const auto* chain = std::get_if<ChainSegment>(&s.geometry);
-  if (chain == nullptr) {
-    return false;
-  }
-  const Vec2f local = inverseTransformPoint(xf, start);
-  const Vec2f edge = chain->segment.point2 - chain->segment.point1;
-  const Vec2f freeSide{edge.y, -edge.x}; // rightPerp: the free side (chain.hpp)
-  return dot(freeSide, local - chain->segment.point1) < 0.0f;
-}
-
-} // namespace
-
 /// Continuous collision against static shapes: a body that moved more than its core radius this
 /// step could have passed through a thin static shape. Its core circle is swept from `start` to
 /// `end` (a ray against each static shape inflated by the core radius) and stopped just before
 /// the first hit; the speculative contact takes over next step. Returns the allowed end.
 Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start, const Vec2f& end) {
-  const float core = coreRadius(w, b);
+  const float core = b.coreRadius;
   const Vec2f motion = end - start;
   if (core <= 0.0f || lengthSquared(motion) <= core * core) {
     return end; // slow: the discrete contacts see everything it can meet
@@ -121,7 +121,7 @@ Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start,
 }
 
 bool sweepBullet(WorldState& w, Body& b, const Vec2f& startCenter, const Rot2f& startRotation) {
-  const float core = coreRadius(w, b);
+  const float core = b.coreRadius;
   const Vec2f motion = b.center - startCenter;
   if (core <= 0.0f || lengthSquared(motion) <= core * core) {
     return false; // slow this step: the discrete contacts see everything it can meet

@@ -59,6 +59,7 @@ void updateMass(WorldState& w, Body& b) {
   b.localCenter = {};
   if (b.type != BodyType::dynamicBody) {
     b.center = transformPoint(b.transform, b.localCenter);
+    b.coreRadius = 0.0f;
     return;
   }
   float mass = 0.0f;
@@ -98,6 +99,7 @@ void updateMass(WorldState& w, Body& b) {
     b.inverseMass = 1.0f;
   }
   b.center = transformPoint(b.transform, b.localCenter);
+  b.coreRadius = detail::computeCoreRadius(w, b);
 }
 
 /// A manifold computed with the shapes the other way round, turned back to A -> B.
@@ -525,6 +527,7 @@ void World::setMassData(BodyId id, const MassData& massData) {
   b.inertia = b.fixedRotation ? 0.0f : massData.rotationalInertia;
   b.inverseInertia = b.fixedRotation ? 0.0f : 1.0f / massData.rotationalInertia;
   b.center = transformPoint(b.transform, b.localCenter);
+  b.coreRadius = detail::computeCoreRadius(*impl_, b);
   b.wake();
 }
 

@@ -67,6 +67,7 @@ struct Body {
   bool enableSleep = true;
   bool awake = true;
   float sleepTime = 0.0f;            ///< s spent slower than the sleep tolerances
+  float coreRadius = 0.0f;           ///< continuous collision's swept circle, m (computeCoreRadius)
   std::uint32_t solverIndex = 0;     ///< this step's index into the solver arrays (moving bodies)
   std::vector<std::uint32_t> shapes; ///< shape slots
   std::vector<std::uint32_t> joints; ///< joint slots of the joints attached to this body
@@ -272,6 +273,9 @@ void wakeTouched(WorldState& w);
 void updateSleep(WorldState& w, float dt);
 
 // continuous.cpp
+/// The radius of the largest circle about the body's centre of mass inside all its shapes that
+/// contain it (0 if none): cached in Body::coreRadius whenever the shapes or mass change.
+[[nodiscard]] float computeCoreRadius(const WorldState& w, const Body& b);
 /// Where a fast body may go from `start` toward `end` without passing a static shape.
 [[nodiscard]] Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start, const Vec2f& end);
 /// Continuous collision of a bullet body that moved from (startCenter, startRotation) to where
