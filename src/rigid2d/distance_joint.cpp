@@ -104,25 +104,11 @@ bool isRigid(const DistanceJointDef& def) {
   return !def.enableSpring || (def.enableLimit && def.minLength >= def.maxLength);
 }
 
-/// A one-sided limit with accumulated impulse >= 0, where c >= 0 is allowed and c and its rate
-/// have the sign of `direction` (+1: lower, c = length - minLength; -1: upper, c = maxLength - length).
+/// A one-sided limit on c (+1: lower, c = length - minLength; -1: upper, c = maxLength - length).
 void solveLimit(float& accumulated, float c, float direction, BodyState& a, BodyState& b, const JointFrame& f,
                 const AxisGeometry& g, float mass, const StepContext& context, bool useBias) {
-  float bias = 0.0f;
-  float massScale = 1.0f;
-  float impulseScale = 0.0f;
-  if (c > 0.0f) {
-    bias = c * context.inverseH; // speculative: may close the gap this substep, no more
-  } else if (useBias) {
-    bias = context.jointSoftness.biasRate * c;
-    massScale = context.jointSoftness.massScale;
-    impulseScale = context.jointSoftness.impulseScale;
-  }
-  const float cdot = direction * lengthRate(g, a, b);
-  const float impulse = -mass * massScale * (cdot + bias) - impulseScale * accumulated;
-  const float total = std::max(accumulated + impulse, 0.0f);
-  applyAxial(a, b, f, g, direction * (total - accumulated));
-  accumulated = total;
+  const float applied = limitImpulse(accumulated, c, direction * lengthRate(g, a, b), mass, context, useBias);
+  applyAxial(a, b, f, g, direction * applied);
 }
 
 } // namespace

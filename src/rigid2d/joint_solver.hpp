@@ -9,6 +9,7 @@
 
 #include <impetus/rigid2d/joint.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -82,6 +83,54 @@ inline void storeVelocity(std::vector<BodyState>& states, std::uint32_t index, s
   }
   const float inv = 1.0f / det;
   return {inv * (a22 * b.x - a12 * b.y), inv * (a11 * b.y - a21 * b.x)};
+}
+
+/// One row of a one-sided limit (C >= 0 allowed): the change of its accumulated impulse (kept
+/// >= 0) for a constraint speed `cdot` (of C) and effective mass `mass`. While the limit is not
+/// reached (C > 0) it is speculative: the row may close the gap this substep, no more; once
+/// violated it is pushed back softly at the world's joint stiffness (with bias only).
+[[nodiscard]] inline float limitImpulse(float& accumulated, float c, float cdot, float mass, const StepContext& context,
+                                        bool useBias) {
+  float bias = 0.0f;
+  float massScale = 1.0f;
+  float impulseScale = 0.0f;
+  if (c > 0.0f) {
+    bias = c * context.inverseH;
+  } else if (useBias) {
+    bias = context.jointSoftness.biasRate * c;
+    massScale = context.jointSoftness.massScale;
+    impulseScale = context.jointSoftness.impulseScale;
+  }
+  const float impulse = -mass * massScale * (cdot + bias) - impulseScale * accumulated;
+  const float total = std::max(accumulated + impulse, 0.0f);
+  const float applied = total - accumulated;
+  accumulated = total;
+  return applied;
+}
+
+/// The point constraint (anchors together), as a 2x2 block on the accumulated impulse `linear`:
+/// soft with `soft` when `applySoftness` (the position error then biases the target velocity),
+/// rigid on the velocities otherwise.
+inline void solvePointConstraint(Vec2f& linear, const JointFrame& f, BodyState& a, BodyState& b, const Softness& soft,
+                                 bool applySoftness) {
+  const Vec2f rA = currentAnchor(a, f.frameA);
+  const Vec2f rB = currentAnchor(b, f.frameB);
+  const Vec2f cdot = (b.v + cross(b.w, rB)) - (a.v + cross(a.w, rA));
+  Vec2f bias;
+  float massScale = 1.0f;
+  float impulseScale = 0.0f;
+  if (applySoftness) {
+    const Vec2f separation = (b.dp - a.dp) + (rB - rA) + f.deltaCenter;
+    bias = separation * soft.biasRate;
+    massScale = soft.massScale;
+    impulseScale = soft.impulseScale;
+  }
+  const Vec2f impulse = solve22(pointMass(f, rA, rB), cdot + bias) * -massScale - linear * impulseScale;
+  linear += impulse;
+  a.v -= impulse * f.mA;
+  a.w -= f.iA * cross(rA, impulse);
+  b.v += impulse * f.mB;
+  b.w += f.iB * cross(rB, impulse);
 }
 
 } // namespace impetus::rigid2d::detail

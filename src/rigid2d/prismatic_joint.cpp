@@ -51,21 +51,8 @@ float sliderAxialMass(const Vec2f& axis, const JointFrame& f) {
 
 void solveTranslationLimit(float& accumulated, float c, float direction, const SliderGeometry& g, const JointFrame& f,
                            BodyState& a, BodyState& b, float axialMass, const StepContext& context, bool useBias) {
-  float bias = 0.0f;
-  float massScale = 1.0f;
-  float impulseScale = 0.0f;
-  if (c > 0.0f) {
-    bias = c * context.inverseH; // speculative: may close the gap this substep, no more
-  } else if (useBias) {
-    bias = context.jointSoftness.biasRate * c;
-    massScale = context.jointSoftness.massScale;
-    impulseScale = context.jointSoftness.impulseScale;
-  }
-  const float cdot = direction * axialSpeed(g, a, b);
-  const float impulse = -axialMass * massScale * (cdot + bias) - impulseScale * accumulated;
-  const float total = std::max(accumulated + impulse, 0.0f);
-  applyAxial(g, f, a, b, direction * (total - accumulated));
-  accumulated = total;
+  const float applied = limitImpulse(accumulated, c, direction * axialSpeed(g, a, b), axialMass, context, useBias);
+  applyAxial(g, f, a, b, direction * applied);
 }
 
 void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const StepContext& context) {

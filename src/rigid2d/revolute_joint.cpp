@@ -26,25 +26,11 @@ void applyAngular(BodyState& a, BodyState& b, const JointFrame& f, float impulse
   b.w += f.iB * impulse;
 }
 
-/// A one-sided angular limit: keeps C >= 0 with accumulated impulse >= 0, where C and its rate
-/// have the sign of `direction` (+1: lower limit, C = angle - lower; -1: upper, C = upper - angle).
+/// A one-sided angular limit on C (+1: lower, C = angle - lower; -1: upper, C = upper - angle).
 void solveLimit(float& accumulated, float c, float direction, BodyState& a, BodyState& b, const JointFrame& f,
                 float axialMass, const StepContext& context, bool useBias) {
-  float bias = 0.0f;
-  float massScale = 1.0f;
-  float impulseScale = 0.0f;
-  if (c > 0.0f) {
-    bias = c * context.inverseH; // speculative: may close the gap this substep, no more
-  } else if (useBias) {
-    bias = context.jointSoftness.biasRate * c;
-    massScale = context.jointSoftness.massScale;
-    impulseScale = context.jointSoftness.impulseScale;
-  }
-  const float cdot = direction * (b.w - a.w);
-  const float impulse = -axialMass * massScale * (cdot + bias) - impulseScale * accumulated;
-  const float total = std::max(accumulated + impulse, 0.0f);
-  applyAngular(a, b, f, direction * (total - accumulated));
-  accumulated = total;
+  const float applied = limitImpulse(accumulated, c, direction * (b.w - a.w), axialMass, context, useBias);
+  applyAngular(a, b, f, direction * applied);
 }
 
 } // namespace
@@ -121,25 +107,7 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
   }
 
   // The point constraint, last: it matters most.
-  const Vec2f rA = currentAnchor(a, frame.frameA);
-  const Vec2f rB = currentAnchor(b, frame.frameB);
-  const Vec2f cdot = (b.v + cross(b.w, rB)) - (a.v + cross(a.w, rA));
-  Vec2f bias;
-  float massScale = 1.0f;
-  float impulseScale = 0.0f;
-  if (useBias) {
-    const Vec2f separation = (b.dp - a.dp) + (rB - rA) + frame.deltaCenter;
-    bias = separation * context.jointSoftness.biasRate;
-    massScale = context.jointSoftness.massScale;
-    impulseScale = context.jointSoftness.impulseScale;
-  }
-  const Vec2f solved = solve22(pointMass(frame, rA, rB), cdot + bias);
-  const Vec2f impulse = solved * -massScale - joint.linearImpulse * impulseScale;
-  joint.linearImpulse += impulse;
-  a.v -= impulse * frame.mA;
-  a.w -= frame.iA * cross(rA, impulse);
-  b.v += impulse * frame.mB;
-  b.w += frame.iB * cross(rB, impulse);
+  solvePointConstraint(joint.linearImpulse, frame, a, b, context.jointSoftness, useBias);
 
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);

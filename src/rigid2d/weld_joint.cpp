@@ -65,25 +65,7 @@ void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState
   }
 
   // The point constraint, last.
-  const Vec2f rA = currentAnchor(a, frame.frameA);
-  const Vec2f rB = currentAnchor(b, frame.frameB);
-  const Vec2f cdot = (b.v + cross(b.w, rB)) - (a.v + cross(a.w, rA));
-  Vec2f bias;
-  float massScale = 1.0f;
-  float impulseScale = 0.0f;
-  if (useBias || joint.def.linearHertz > 0.0f) {
-    const Vec2f separation = (b.dp - a.dp) + (rB - rA) + frame.deltaCenter;
-    bias = separation * joint.linearSoftness.biasRate;
-    massScale = joint.linearSoftness.massScale;
-    impulseScale = joint.linearSoftness.impulseScale;
-  }
-  const Vec2f solved = solve22(pointMass(frame, rA, rB), cdot + bias);
-  const Vec2f impulse = solved * -massScale - joint.linearImpulse * impulseScale;
-  joint.linearImpulse += impulse;
-  a.v -= impulse * frame.mA;
-  a.w -= frame.iA * cross(rA, impulse);
-  b.v += impulse * frame.mB;
-  b.w += frame.iB * cross(rB, impulse);
+  solvePointConstraint(joint.linearImpulse, frame, a, b, joint.linearSoftness, useBias || joint.def.linearHertz > 0.0f);
 
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
