@@ -4,6 +4,8 @@
 #pragma once
 
 #include <impetus/error.hpp>
+#include <impetus/math/scalar.hpp>
+#include <impetus/math/vec2.hpp>
 #include <impetus/math/vec3.hpp>
 
 #include <nlohmann/json.hpp>
@@ -11,10 +13,12 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace impetus::cli::json_fields {
 
@@ -214,6 +218,80 @@ template <class F> void forEach(const json& doc, const std::string& key, F&& eac
   for (std::size_t i = 0; i < items.size(); ++i) {
     each(items[i], index(key, i));
   }
+}
+
+/// 2D values, lists of points, angles in degrees, bit fields and words of a closed set, for the
+/// 2D scene files.
+inline Vec2f vec2At(const json& j, const std::string& field) {
+  if (!j.is_array() || j.size() != 2) {
+    fail(field, "expected an array of 2 numbers, got " + j.dump());
+  }
+  return {Fields::narrow(Fields::numberAt(j[0], field + "[0]"), field + "[0]"),
+          Fields::narrow(Fields::numberAt(j[1], field + "[1]"), field + "[1]")};
+}
+inline Vec2f vec2(Fields& f, const std::string& key, const Vec2f& fallback) {
+  const json* j = f.find(key);
+  return j != nullptr ? vec2At(*j, f.path(key)) : fallback;
+}
+inline Vec2f requiredVec2(Fields& f, const std::string& key) { return vec2At(f.require(key), f.path(key)); }
+
+/// A list of points [[x, y], ...] with between lo and hi entries.
+inline std::vector<Vec2f> points(Fields& f, const std::string& key, std::size_t lo, std::size_t hi) {
+  const json& j = f.require(key);
+  const std::string field = f.path(key);
+  if (!j.is_array()) {
+    fail(field, "expected an array of [x, y] points, got " + j.dump());
+  }
+  if (j.size() < lo || j.size() > hi) {
+    fail(field,
+         "expected " + std::to_string(lo) + " to " + std::to_string(hi) + " points, got " + std::to_string(j.size()));
+  }
+  std::vector<Vec2f> out;
+  out.reserve(j.size());
+  for (std::size_t k = 0; k < j.size(); ++k) {
+    out.push_back(vec2At(j[k], index(field, k)));
+  }
+  return out;
+}
+
+/// An angle given in degrees (key ends in _deg), in radians.
+inline float angleDeg(Fields& f, const std::string& key, float fallbackRad) {
+  return f.has(key) ? degToRad(f.real(key, 0.0)) : fallbackRad;
+}
+
+/// A collision bit field: a whole number in [0, 2^64 - 1].
+inline std::uint64_t bits(Fields& f, const std::string& key, std::uint64_t fallback) {
+  const json* j = f.find(key);
+  if (j == nullptr) {
+    return fallback;
+  }
+  if (j->is_number_unsigned()) {
+    return j->get<std::uint64_t>();
+  }
+  if (j->is_number_integer()) {
+    throwInvalid(f.path(key), static_cast<double>(j->get<std::int64_t>()), "must be a whole number >= 0");
+  }
+  fail(f.path(key), "expected a whole number (a bit field), got " + j->dump());
+}
+
+/// One word of a closed set.
+inline std::string choice(Fields& f, const std::string& key, const std::string& fallback,
+                          std::initializer_list<const char*> allowed, const std::string& what) {
+  const std::string value = f.text(key, fallback);
+  std::string list;
+  for (const char* a : allowed) {
+    if (value == a) {
+      return value;
+    }
+    list += (list.empty() ? "" : ", ") + std::string(a);
+  }
+  fail(f.path(key), "unknown " + what + " '" + value + "' (" + list + ")");
+}
+
+/// The "type" of an element, required.
+inline std::string typeOf(Fields& f, std::initializer_list<const char*> allowed, const std::string& what) {
+  (void)f.require("type");
+  return choice(f, "type", "", allowed, what);
 }
 
 } // namespace impetus::cli::json_fields

@@ -25,90 +25,24 @@ std::size_t Rigid2dScene::jointNumber(rigid2d::JointId id) const { return jointB
 
 namespace {
 
+using json_fields::angleDeg;
 using json_fields::arrayOf;
 using json_fields::at;
+using json_fields::bits;
+using json_fields::choice;
 using json_fields::fail;
 using json_fields::Fields;
 using json_fields::forEach;
 using json_fields::index;
+using json_fields::points;
+using json_fields::requiredVec2;
+using json_fields::typeOf;
+using json_fields::vec2;
+using json_fields::vec2At;
 using nlohmann::json;
 using namespace rigid2d;
 
 constexpr std::size_t maxBodies = 1'000'000;
-
-// Typed values beyond json_fields ------------------------------------------------------------
-
-Vec2f vec2At(const json& j, const std::string& field) {
-  if (!j.is_array() || j.size() != 2) {
-    fail(field, "expected an array of 2 numbers, got " + j.dump());
-  }
-  return {Fields::narrow(Fields::numberAt(j[0], field + "[0]"), field + "[0]"),
-          Fields::narrow(Fields::numberAt(j[1], field + "[1]"), field + "[1]")};
-}
-Vec2f vec2(Fields& f, const std::string& key, const Vec2f& fallback) {
-  const json* j = f.find(key);
-  return j != nullptr ? vec2At(*j, f.path(key)) : fallback;
-}
-Vec2f requiredVec2(Fields& f, const std::string& key) { return vec2At(f.require(key), f.path(key)); }
-
-/// A list of points [[x, y], ...] with between lo and hi entries.
-std::vector<Vec2f> points(Fields& f, const std::string& key, std::size_t lo, std::size_t hi) {
-  const json& j = f.require(key);
-  const std::string field = f.path(key);
-  if (!j.is_array()) {
-    fail(field, "expected an array of [x, y] points, got " + j.dump());
-  }
-  if (j.size() < lo || j.size() > hi) {
-    fail(field,
-         "expected " + std::to_string(lo) + " to " + std::to_string(hi) + " points, got " + std::to_string(j.size()));
-  }
-  std::vector<Vec2f> out;
-  out.reserve(j.size());
-  for (std::size_t k = 0; k < j.size(); ++k) {
-    out.push_back(vec2At(j[k], index(field, k)));
-  }
-  return out;
-}
-
-/// An angle given in degrees (key ends in _deg), in radians.
-float angleDeg(Fields& f, const std::string& key, float fallbackRad) {
-  return f.has(key) ? degToRad(f.real(key, 0.0)) : fallbackRad;
-}
-
-/// A collision bit field: a whole number in [0, 2^64 - 1].
-std::uint64_t bits(Fields& f, const std::string& key, std::uint64_t fallback) {
-  const json* j = f.find(key);
-  if (j == nullptr) {
-    return fallback;
-  }
-  if (j->is_number_unsigned()) {
-    return j->get<std::uint64_t>();
-  }
-  if (j->is_number_integer()) {
-    throwInvalid(f.path(key), static_cast<double>(j->get<std::int64_t>()), "must be a whole number >= 0");
-  }
-  fail(f.path(key), "expected a whole number (a bit field), got " + j->dump());
-}
-
-/// One word of a closed set.
-std::string choice(Fields& f, const std::string& key, const std::string& fallback,
-                   std::initializer_list<const char*> allowed, const std::string& what) {
-  const std::string value = f.text(key, fallback);
-  std::string list;
-  for (const char* a : allowed) {
-    if (value == a) {
-      return value;
-    }
-    list += (list.empty() ? "" : ", ") + std::string(a);
-  }
-  fail(f.path(key), "unknown " + what + " '" + value + "' (" + list + ")");
-}
-
-/// The "type" of an element, required.
-std::string typeOf(Fields& f, std::initializer_list<const char*> allowed, const std::string& what) {
-  (void)f.require("type");
-  return choice(f, "type", "", allowed, what);
-}
 
 /// A name that can go in a CSV field as it is.
 std::string nameOf(Fields& f) {
