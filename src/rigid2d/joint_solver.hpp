@@ -85,6 +85,20 @@ inline void storeVelocity(std::vector<BodyState>& states, std::uint32_t index, s
   return {inv * (a22 * b.x - a12 * b.y), inv * (a11 * b.y - a21 * b.x)};
 }
 
+/// A joint whose spring, motor or limits are switched off holds no impulse for them (it would be
+/// warm started otherwise). For the joint types with those three parts.
+template <class JointData> void clearSwitchedOffImpulses(JointData& joint) {
+  if (!joint.def.enableSpring) {
+    joint.springImpulse = 0.0f;
+  }
+  if (!joint.def.enableMotor) {
+    joint.motorImpulse = 0.0f;
+  }
+  if (!joint.def.enableLimit) {
+    joint.lowerImpulse = joint.upperImpulse = 0.0f;
+  }
+}
+
 /// One row of a one-sided limit (C >= 0 allowed): the change of its accumulated impulse (kept
 /// >= 0) for a constraint speed `cdot` (of C) and effective mass `mass`. While the limit is not
 /// reached (C > 0) it is speculative: the row may close the gap this substep, no more; once

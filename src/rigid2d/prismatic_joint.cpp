@@ -60,16 +60,7 @@ void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const StepCont
   joint.solvedAxis = joint.axisA;
   joint.axialMass = sliderAxialMass(joint.axisA, frame);
   joint.springSoftness = makeSoft(joint.def.hertz, joint.def.dampingRatio, context.h);
-  // What is switched off holds no impulse (it would be warm started otherwise).
-  if (!joint.def.enableSpring) {
-    joint.springImpulse = 0.0f;
-  }
-  if (!joint.def.enableMotor) {
-    joint.motorImpulse = 0.0f;
-  }
-  if (!joint.def.enableLimit) {
-    joint.lowerImpulse = joint.upperImpulse = 0.0f;
-  }
+  clearSwitchedOffImpulses(joint);
 }
 
 void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

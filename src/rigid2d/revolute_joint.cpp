@@ -41,16 +41,7 @@ void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepConte
   joint.angleAtStart = static_cast<float>(
       std::remainder(static_cast<double>(frame.deltaAngle) - joint.def.referenceAngle, 2.0 * 3.14159265358979));
   joint.springSoftness = makeSoft(joint.def.hertz, joint.def.dampingRatio, context.h);
-  // What is switched off holds no impulse (it would be warm started otherwise).
-  if (!joint.def.enableSpring) {
-    joint.springImpulse = 0.0f;
-  }
-  if (!joint.def.enableMotor) {
-    joint.motorImpulse = 0.0f;
-  }
-  if (!joint.def.enableLimit) {
-    joint.lowerImpulse = joint.upperImpulse = 0.0f;
-  }
+  clearSwitchedOffImpulses(joint);
   if (joint.def.frictionTorque == 0.0f) {
     joint.frictionImpulse = 0.0f;
   }

@@ -26,16 +26,7 @@ void prepareJoint(WheelJoint& joint, const JointFrame& frame, const StepContext&
   const float km = frame.iA + frame.iB;
   joint.motorMass = km > 0.0f ? 1.0f / km : 0.0f;
   joint.springSoftness = makeSoft(joint.def.hertz, joint.def.dampingRatio, context.h);
-  // What is switched off holds no impulse (it would be warm started otherwise).
-  if (!joint.def.enableSpring) {
-    joint.springImpulse = 0.0f;
-  }
-  if (!joint.def.enableMotor) {
-    joint.motorImpulse = 0.0f;
-  }
-  if (!joint.def.enableLimit) {
-    joint.lowerImpulse = joint.upperImpulse = 0.0f;
-  }
+  clearSwitchedOffImpulses(joint);
 }
 
 void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
