@@ -145,9 +145,14 @@ void PointAttractor::apply(World& world, float dt) {
     if (!(r > 0.0f)) {
       continue; // at the centre: no direction
     }
-    // |a| = mu / (r^2 + eps^2), m/s^2, toward the centre.
+    // |a| = mu / (r^2 + eps^2), m/s^2, toward the centre. Without softening a body passing
+    // (almost) through the centre would get an unbounded pull: skip it while the force would
+    // not be finite (it is past the point where the model means anything).
     const float a = settings_.mu / (r2 + eps2);
-    world.applyForce(body, d * (world.mass(body) * a / r), center);
+    const Vec2f force = d * (world.mass(body) * a / r);
+    if (std::isfinite(force.x) && std::isfinite(force.y)) {
+      world.applyForce(body, force, center);
+    }
   }
 }
 

@@ -585,3 +585,33 @@ TEST(EffectorSettings, bad_input_names_the_field) {
 
 } // namespace
 } // namespace impetus::rigid2d
+
+namespace impetus::rigid2d {
+namespace {
+
+// An unsoftened attractor does not blow up on a body at (almost) its centre: the pull there is
+// skipped instead of reaching the world as an infinite force.
+TEST(EffectorAttractor, unsoftened_pull_at_the_centre_stays_finite) {
+  WorldDef def;
+  def.gravity = {};
+  World world(def);
+  BodyDef body;
+  body.type = BodyType::dynamicBody;
+  body.position = {1e-20f, 0.0f};
+  const BodyId b = world.createBody(body);
+  world.createShape(b, {}, Circle{{}, 0.1f});
+  PointAttractorSettings settings;
+  settings.center = {};
+  settings.mu = 1000.0f;
+  settings.softening = 0.0f;
+  PointAttractor attractor(settings);
+  for (int i = 0; i < 10; ++i) {
+    EXPECT_NO_THROW(attractor.apply(world, 1.0f / 60.0f));
+    world.step(1.0f / 60.0f);
+  }
+  EXPECT_TRUE(std::isfinite(world.position(b).x));
+  EXPECT_TRUE(std::isfinite(world.linearVelocity(b).x));
+}
+
+} // namespace
+} // namespace impetus::rigid2d
