@@ -13,15 +13,6 @@ namespace impetus::rigid2d {
 
 namespace detail {
 
-Body& WorldState::body(BodyId id) {
-  if (!bodyIds.isValidId(id)) {
-    throwInvalid("body id", static_cast<double>(id.index), "body does not exist (destroyed or never created)");
-  }
-  return bodies[id.index];
-}
-
-const Body& WorldState::body(BodyId id) const { return const_cast<WorldState*>(this)->body(id); }
-
 ShapeProxy shapeProxy(const Shape& s) {
   return std::visit(
       [](const auto& g) {

@@ -5,6 +5,7 @@
 
 #include <impetus/core/id_pool.hpp>
 #include <impetus/core/task_runner.hpp>
+#include <impetus/error.hpp>
 #include <impetus/rigid2d/chain.hpp>
 #include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/dynamic_tree.hpp>
@@ -16,6 +17,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -136,6 +138,16 @@ struct BulletStart {
   Rot2f rotation;
 };
 
+/// items[id.index] when `id` is live in `pool`, else an impetus::Error naming `field`.
+template <class T, class Tag>
+T& checkedSlot(const IdPool& pool, std::vector<T>& items, Id<Tag> id, const char* field, const char* what) {
+  if (!pool.isValidId(id)) {
+    throwInvalid(field, static_cast<double>(id.index),
+                 std::string(what) + " does not exist (destroyed or never created)");
+  }
+  return items[id.index];
+}
+
 struct WorldState {
   WorldState();
   ~WorldState();
@@ -181,9 +193,13 @@ struct WorldState {
   ContactEvents pendingEvents; ///< raised between steps (destroyed bodies): reported by the next step
   SensorEvents pendingSensorEvents;
 
-  Body& body(BodyId id);
-  [[nodiscard]] const Body& body(BodyId id) const;
-  Joint& joint(JointId id);
+  // The item a live id names; an id that was destroyed or never made is an impetus::Error
+  // naming "body id", "shape id" or "joint id".
+  Body& body(BodyId id) { return checkedSlot(bodyIds, bodies, id, "body id", "body"); }
+  [[nodiscard]] const Body& body(BodyId id) const { return const_cast<WorldState*>(this)->body(id); }
+  Shape& shape(ShapeId id) { return checkedSlot(shapeIds, shapes, id, "shape id", "shape"); }
+  [[nodiscard]] const Shape& shape(ShapeId id) const { return const_cast<WorldState*>(this)->shape(id); }
+  Joint& joint(JointId id); // world_joints.cpp, where Joint is complete
   [[nodiscard]] const Joint& joint(JointId id) const;
   /// Whether a joint between the two bodies (slots) turns their collision off.
   [[nodiscard]] bool jointBlocksCollision(std::uint32_t bodyA, std::uint32_t bodyB) const;

@@ -16,13 +16,7 @@ using detail::WorldState;
 
 namespace detail {
 
-Joint& WorldState::joint(JointId id) {
-  if (!jointIds.isValidId(id)) {
-    throwInvalid("joint id", static_cast<double>(id.index), "joint does not exist (destroyed or never created)");
-  }
-  return joints[id.index];
-}
-
+Joint& WorldState::joint(JointId id) { return checkedSlot(jointIds, joints, id, "joint id", "joint"); }
 const Joint& WorldState::joint(JointId id) const { return const_cast<WorldState*>(this)->joint(id); }
 
 bool WorldState::jointBlocksCollision(std::uint32_t bodyA, std::uint32_t bodyB) const {

@@ -165,25 +165,11 @@ void World::bodyShapes(BodyId body, std::vector<ShapeId>& out) const {
 
 BodyType World::bodyType(BodyId id) const { return impl_->body(id).type; }
 
-namespace {
-const Shape& shapeOf(const detail::WorldState& w, ShapeId id) {
-  if (!w.shapeIds.isValidId(id)) {
-    throwInvalid("shape id", static_cast<double>(id.index), "shape does not exist");
-  }
-  return w.shapes[id.index];
-}
-} // namespace
+ShapeGeometry World::shapeGeometry(ShapeId shape) const { return impl_->shape(shape).geometry; }
+float World::shapeDensity(ShapeId shape) const { return impl_->shape(shape).density; }
+float World::shapeFriction(ShapeId shape) const { return impl_->shape(shape).friction; }
+bool World::isSensor(ShapeId shape) const { return impl_->shape(shape).sensor; }
 
-ShapeGeometry World::shapeGeometry(ShapeId shape) const { return shapeOf(*impl_, shape).geometry; }
-float World::shapeDensity(ShapeId shape) const { return shapeOf(*impl_, shape).density; }
-float World::shapeFriction(ShapeId shape) const { return shapeOf(*impl_, shape).friction; }
-bool World::isSensor(ShapeId shape) const { return shapeOf(*impl_, shape).sensor; }
-
-BodyId World::shapeBody(ShapeId shape) const {
-  if (!impl_->shapeIds.isValidId(shape)) {
-    throwInvalid("shape id", static_cast<double>(shape.index), "shape does not exist");
-  }
-  return impl_->bodies[impl_->shapes[shape.index].body].id;
-}
+BodyId World::shapeBody(ShapeId shape) const { return impl_->bodies[impl_->shape(shape).body].id; }
 
 } // namespace impetus::rigid2d

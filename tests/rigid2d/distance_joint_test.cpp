@@ -3,6 +3,8 @@
 // input errors.
 #include "support/error_field.hpp"
 
+#include "bodies.hpp"
+
 #include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/world.hpp>
 
@@ -18,17 +20,7 @@ namespace {
 constexpr float dt = 1.0f / 60.0f;
 constexpr float g = 10.0f;
 
-BodyId addBall(World& world, const Vec2f& position, float radius, float density = 1.0f) {
-  BodyDef def;
-  def.type = BodyType::dynamicBody;
-  def.position = position;
-  def.enableSleep = false;
-  const BodyId b = world.createBody(def);
-  ShapeDef shape;
-  shape.density = density;
-  world.createShape(b, shape, Circle{{}, radius});
-  return b;
-}
+using test::addBall;
 
 World makeWorld(const Vec2f& gravity) {
   WorldDef def;

@@ -2,6 +2,8 @@
 // and the joint bookkeeping (collision between connected bodies, break events, bad input).
 #include "support/error_field.hpp"
 
+#include "bodies.hpp"
+
 #include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/world.hpp>
 
@@ -16,17 +18,7 @@ namespace {
 constexpr float dt = 1.0f / 60.0f;
 constexpr float g = 10.0f;
 
-BodyId addBall(World& world, const Vec2f& position, float radius, float density = 1.0f) {
-  BodyDef def;
-  def.type = BodyType::dynamicBody;
-  def.position = position;
-  def.enableSleep = false;
-  const BodyId b = world.createBody(def);
-  ShapeDef shape;
-  shape.density = density;
-  world.createShape(b, shape, Circle{{}, radius});
-  return b;
-}
+using test::addBall;
 
 /// Complete elliptic integral of the first kind, K(k) = pi / (2 AGM(1, sqrt(1 - k^2))).
 double ellipticK(double k) {
