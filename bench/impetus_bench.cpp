@@ -185,6 +185,10 @@ int main(int argc, char** argv) {
                  "Impetus contact stiffness, Hz (capped at a quarter of the substep rate)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  std::string simd = "widest";
+  app.add_option("--simd", simd,
+                 "Impetus contact-solve lanes: the widest the CPU runs (AVX2: 8) or the baseline (SSE2: 4)")
+      ->check(CLI::IsMember({"widest", "baseline"}));
   app.add_option("--threads", threads, "threads for Impetus (a ThreadPool; Box2D 2.4.1 is single-threaded)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
@@ -193,6 +197,11 @@ int main(int argc, char** argv) {
                "enough to tunnel)");
   app.add_flag("--json", json, "one JSON object per scene and line");
   CLI11_PARSE(app, argc, argv);
+  settings.simd = simd == "baseline" ? impetus::rigid2d::SimdLevel::baseline : impetus::rigid2d::SimdLevel::widest;
+  impetus::rigid2d::WorldDef simdDef;
+  simdDef.simd = settings.simd;
+  const impetus::rigid2d::World probe(simdDef);
+  const std::string lanes = std::string(probe.contactSimd()) + " (" + std::to_string(probe.contactLanes()) + " lanes)";
 
   std::vector<std::string> names;
   try {
@@ -205,8 +214,8 @@ int main(int argc, char** argv) {
   const bool runI = engine != "box2d";
   const bool runB = engine != "impetus";
   if (!json) {
-    std::cout << "Impetus on " << threads << (threads == 1 ? " thread" : " threads")
-              << ", Box2D single-threaded; 1/60 s steps; Impetus " << settings.substeps << " substeps at "
+    std::cout << "Impetus on " << threads << (threads == 1 ? " thread" : " threads") << ", contacts solved with "
+              << lanes << ", Box2D single-threaded; 1/60 s steps; Impetus " << settings.substeps << " substeps at "
               << settings.contactHertz << " Hz, Box2D 2.4.1 " << bench::box2dVelocityIterations << " velocity / "
               << bench::box2dPositionIterations << " position iterations, continuous collision "
               << (peerContinuous ? "on" : "off") << "; no sleeping\n"
@@ -246,6 +255,8 @@ int main(int argc, char** argv) {
         j["impetus_ms_per_step"] = ri->msPerStep;
         j["impetus_substeps"] = settings.substeps;
         j["impetus_contact_hertz"] = settings.contactHertz;
+        j["impetus_simd"] = probe.contactSimd();
+        j["impetus_contact_lanes"] = probe.contactLanes();
         if (!scene.tops.empty()) {
           j["impetus_top_sink_m"] = ri->topSink;
           j["impetus_top_max_sink_m"] = ri->topMaxSink;

@@ -142,6 +142,7 @@ struct ImpetusScene {
 struct ImpetusSettings {
   int substeps = rigid2d::WorldDef{}.substeps;
   float contactHertz = rigid2d::WorldDef{}.contactHertz;
+  rigid2d::SimdLevel simd = rigid2d::WorldDef{}.simd;
   TaskRunner* runner = nullptr;
 };
 [[nodiscard]] ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings& settings = {});

@@ -1,7 +1,8 @@
-// Several floats at once for the wide contact solver: eight with AVX2 (the build option
-// IMPETUS_ENABLE_AVX2, for machines that have it), four with SSE2 (always present on x86-64),
-// four plain floats elsewhere. Only what the solver needs; every operation is lane by lane, with
-// no fused multiply-add, so a lane computes exactly what the scalar solver would.
+// Several floats at once for the wide contact solver: eight with AVX2 (IMPETUS_SIMD_AVX2 in a
+// translation unit compiled with -mavx2), four with SSE2 (always present on x86-64), four plain
+// floats elsewhere. Each flavour lives in its own inline namespace, so translation units built
+// for different instruction sets never share a function of the same name. Only what the solver needs; every operation
+// is lane by lane, with no fused multiply-add, so a lane computes exactly what the scalar solver would.
 //
 // Bodies are loaded and stored as rows of eight floats (BodyState: v.x, v.y, w, unused, dp.x,
 // dp.y, dq.c, dq.s) and transposed into one FloatW per field.
@@ -20,11 +21,21 @@
 #undef IMPETUS_SIMD_AVX2
 #endif
 
+#if defined(IMPETUS_SIMD_AVX2)
+#define IMPETUS_SIMD_NAMESPACE simd_avx2
+#elif defined(IMPETUS_SIMD_SSE2)
+#define IMPETUS_SIMD_NAMESPACE simd_sse2
+#else
+#define IMPETUS_SIMD_NAMESPACE simd_scalar
+#endif
+
 namespace impetus::rigid2d::detail {
+inline namespace IMPETUS_SIMD_NAMESPACE {
 
 #if defined(IMPETUS_SIMD_AVX2)
 
 inline constexpr int simdWidth = 8;
+inline constexpr const char* simdName = "avx2";
 
 struct FloatW {
   __m256 v;
@@ -116,6 +127,7 @@ inline void loadRowHeadsW(const float* const (&rows)[8], FloatW& c0, FloatW& c1,
 #elif defined(IMPETUS_SIMD_SSE2)
 
 inline constexpr int simdWidth = 4;
+inline constexpr const char* simdName = "sse2";
 
 struct FloatW {
   __m128 v;
@@ -147,6 +159,7 @@ inline bool anyNonZeroW(FloatW a) { return _mm_movemask_ps(_mm_cmpneq_ps(a.v, _m
 #else
 
 inline constexpr int simdWidth = 4;
+inline constexpr const char* simdName = "scalar";
 
 struct FloatW {
   float v[4];
@@ -253,4 +266,5 @@ inline void storeRowHeadsW(float* const (&rows)[4], FloatW c0, FloatW c1, FloatW
 }
 #endif
 
+} // namespace IMPETUS_SIMD_NAMESPACE
 } // namespace impetus::rigid2d::detail

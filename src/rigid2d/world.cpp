@@ -329,6 +329,9 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
   requireNonNegative(def.timeToSleep, "timeToSleep");
   requireNonNegative(def.sleepLinearTolerance, "sleepLinearTolerance");
   requireNonNegative(def.sleepAngularTolerance, "sleepAngularTolerance");
+  if (def.simd != SimdLevel::widest && def.simd != SimdLevel::baseline) {
+    throwInvalid("simd", static_cast<int>(def.simd), "must be SimdLevel::widest or SimdLevel::baseline");
+  }
   if (def.solver != SolverKind::softStep && def.solver != SolverKind::bookImpulse) {
     throwInvalid("solver", static_cast<int>(def.solver), "unknown solver kind");
   }
@@ -339,6 +342,8 @@ World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
 const WorldDef& World::settings() const noexcept { return impl_->def; }
+int World::contactLanes() const noexcept { return detail::contactLanes(*impl_); }
+const char* World::contactSimd() const noexcept { return detail::contactSimd(*impl_); }
 
 BodyId World::createBody(const BodyDef& def) {
   requireFinite(def.position, "position");

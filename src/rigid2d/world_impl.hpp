@@ -275,12 +275,15 @@ void integratePositions(WorldState& w, const StepContext& context);
 void solveBookImpulse(WorldState& w, float dt);
 
 // contact_solver.cpp: the contact constraints, coloured so that each colour's constraints share
-// no moving body and are solved four at a time (and on several threads).
+// no moving body and are solved several at a time in SIMD lanes (and on several threads).
 void prepareContacts(WorldState& w, const StepContext& context);
 void warmStartContacts(WorldState& w);
 void solveContacts(WorldState& w, const StepContext& context, bool useBias);
 void applyRestitution(WorldState& w);
 void storeImpulses(WorldState& w);
+/// The lane width and instruction set the world's def.simd selects on this CPU.
+[[nodiscard]] int contactLanes(const WorldState& w);
+[[nodiscard]] const char* contactSimd(const WorldState& w);
 
 // island.cpp
 /// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).

@@ -1,6 +1,7 @@
 // Same inputs, same bits: the mixed scene stepped with no task runner and with thread pools of
 // 1, 2 and 4 threads must end in bit-identical states, and so must two runs of the same
-// configuration.
+// configuration; and the baseline lane width (SSE2: four contacts at once) must match the widest
+// the CPU runs (AVX2: eight).
 #include "mixed_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -17,6 +18,17 @@ TEST(Determinism2D, identical_run_after_run_and_at_any_thread_count) {
     ThreadPool pool(threads);
     EXPECT_EQ(runMixedScene(&pool), reference) << threads << " threads";
   }
+}
+
+TEST(Determinism2D, identical_at_any_simd_width) {
+  WorldDef baselineDef;
+  baselineDef.simd = SimdLevel::baseline;
+  const World baseline(baselineDef);
+  const World widest;
+  EXPECT_EQ(baseline.contactLanes(), 4);
+  EXPECT_GE(widest.contactLanes(), baseline.contactLanes());
+  EXPECT_EQ(runMixedScene(nullptr, SimdLevel::baseline), runMixedScene(nullptr, SimdLevel::widest))
+      << "baseline (" << baseline.contactSimd() << ") and widest (" << widest.contactSimd() << ") differ";
 }
 
 } // namespace

@@ -36,9 +36,10 @@ inline std::uint64_t stateHash(const World& world, const std::vector<BodyId>& bo
 
 /// A busy scene (a pyramid, a rain of circles and capsules with restitution and rolling
 /// resistance, a spinning kinematic paddle) stepped 120 times; the hash of its final state.
-inline std::uint64_t runMixedScene(TaskRunner* runner) {
+inline std::uint64_t runMixedScene(TaskRunner* runner, SimdLevel simd = SimdLevel::widest) {
   WorldDef def;
   def.taskRunner = runner;
+  def.simd = simd;
   def.enableSleep = false;
   World world(def);
   std::vector<BodyId> bodies;

@@ -65,6 +65,15 @@ enum class SolverKind {
   bookImpulse,
 };
 
+/// The instruction set of the soft step's wide contact solve.
+enum class SimdLevel {
+  /// The widest the CPU runs: AVX2 (eight contacts at once) where the CPU has it, else the
+  /// baseline. The default.
+  widest,
+  /// The baseline of the build: SSE2 on x86-64 (four at once), plain floats elsewhere.
+  baseline,
+};
+
 struct WorldDef {
   Vec2f gravity{0.0f, -10.0f}; ///< m/s^2
   SolverKind solver = SolverKind::softStep;
@@ -86,6 +95,9 @@ struct WorldDef {
   /// Runs the step's parallel loops (not owned; must outlive the world). Null: everything on
   /// the calling thread. Results are bit-identical with or without, at any thread count.
   TaskRunner* taskRunner = nullptr;
+  /// Lane width of the contact solve. Results are bit-identical at any width (every lane does
+  /// the scalar solver's arithmetic, without fused multiply-add); only the speed differs.
+  SimdLevel simd = SimdLevel::widest;
 };
 
 } // namespace impetus::rigid2d

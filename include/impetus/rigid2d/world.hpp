@@ -10,8 +10,8 @@
 // the same inputs give bit-identical results.
 //
 // Contacts are coloured so that a colour's constraints share no moving body: they are solved
-// four at a time in SIMD lanes and, with a WorldDef::taskRunner, on several threads, with
-// bit-identical results either way. docs/rigid2d.md explains the step and its tuning.
+// four (SSE2) or eight (AVX2, where the CPU has it) at a time in SIMD lanes and, with a WorldDef::taskRunner, on
+// several threads, with bit-identical results either way. docs/rigid2d.md explains the step and its tuning.
 #pragma once
 
 #include <impetus/math/transform2.hpp>
@@ -200,6 +200,10 @@ public:
   [[nodiscard]] const SensorEvents& sensorEvents() const noexcept;
 
   [[nodiscard]] const WorldDef& settings() const noexcept;
+  /// How many contacts the soft step solves at once (8 with AVX2, 4 with SSE2) and the name of
+  /// the instruction set ("avx2", "sse2" or "scalar"): what WorldDef::simd chose on this CPU.
+  [[nodiscard]] int contactLanes() const noexcept;
+  [[nodiscard]] const char* contactSimd() const noexcept;
 
 private:
   struct Impl;

@@ -1,0 +1,292 @@
+// The wide contact kernels, written once over FloatW (simd.hpp) and compiled once per
+// instruction set: contact_wide_sse2.cpp and contact_wide_avx2.cpp include this file, each into
+// its own translation unit with its own lane width. Everything here has internal linkage, so
+// the two builds never share (or swap) a function; each TU exports one table (WideKernels).
+//
+// Layout: a batch holds `simdWidth` contacts, field by field (structure of arrays), so a pass
+// loads each field once for all lanes. Bodies are gathered from their BodyState rows and
+// transposed into columns, and scattered back (never into the static state).
+#pragma once
+
+#include "rigid2d/contact_constraint.hpp"
+#include "rigid2d/simd.hpp"
+
+namespace impetus::rigid2d::detail {
+namespace {
+
+/// `simdWidth` contacts in SIMD lanes. Unused lanes point at the static state with zero masses, so
+/// they compute zero impulses; a one-point manifold's second point has zero mass likewise.
+struct ContactConstraintWide {
+  std::array<std::uint32_t, simdWidth> indexA{}, indexB{};
+  FloatW invMassA, invMassB, invIA, invIB;
+  FloatW normalX, normalY;
+  FloatW friction, restitution, rollingResistance, rollingMass, rollingImpulse;
+  FloatW biasRate, massScale, impulseScale;
+  struct Point {
+    FloatW rAx, rAy, rBx, rBy;
+    FloatW adjustedSeparation;
+    FloatW normalImpulse, tangentImpulse, maxNormalImpulse;
+    FloatW normalMass, tangentMass;
+    FloatW relativeVelocity;
+  };
+  std::array<Point, 2> points;
+};
+
+float& lane(FloatW& w, int i) { return reinterpret_cast<float*>(&w)[i]; }
+float lane(const FloatW& w, int i) { return reinterpret_cast<const float*>(&w)[i]; }
+
+/// Velocities (and, for the solve, position deltas) of four bodies, as columns.
+struct BodiesW {
+  FloatW vx, vy, w, dpx, dpy, dqc, dqs;
+};
+
+BodiesW gather(const BodyState* states, const std::array<std::uint32_t, simdWidth>& index) {
+  const float* rows[simdWidth];
+  for (std::size_t i = 0; i < simdWidth; ++i) {
+    rows[i] = &states[index[i]].v.x;
+  }
+  FloatW columns[8];
+  loadRowsW(rows, columns);
+  return {columns[0], columns[1], columns[2], columns[4], columns[5], columns[6], columns[7]};
+}
+
+/// Velocities only (warm start and restitution need no position deltas).
+BodiesW gatherVelocities(const BodyState* states, const std::array<std::uint32_t, simdWidth>& index) {
+  const float* rows[simdWidth];
+  for (std::size_t i = 0; i < simdWidth; ++i) {
+    rows[i] = &states[index[i]].v.x;
+  }
+  BodiesW b;
+  FloatW unused;
+  loadRowHeadsW(rows, b.vx, b.vy, b.w, unused);
+  return b;
+}
+
+/// Writes the velocities back, except to the static state.
+void scatter(BodyState* states, const std::array<std::uint32_t, simdWidth>& index, std::uint32_t staticIndex,
+             const BodiesW& b) {
+  float* rows[simdWidth];
+  for (std::size_t i = 0; i < simdWidth; ++i) {
+    rows[i] = index[i] == staticIndex ? nullptr : &states[index[i]].v.x;
+  }
+  storeRowHeadsW(rows, b.vx, b.vy, b.w, zeroW());
+}
+
+/// Copies a constraint into lane i of a wide constraint.
+void setLane(ContactConstraintWide& wc, int i, const ContactConstraint& c) {
+  const auto li = static_cast<std::size_t>(i);
+  wc.indexA[li] = c.indexA;
+  wc.indexB[li] = c.indexB;
+  lane(wc.invMassA, i) = c.mA;
+  lane(wc.invMassB, i) = c.mB;
+  lane(wc.invIA, i) = c.iA;
+  lane(wc.invIB, i) = c.iB;
+  lane(wc.normalX, i) = c.normal.x;
+  lane(wc.normalY, i) = c.normal.y;
+  lane(wc.friction, i) = c.friction;
+  lane(wc.restitution, i) = c.restitution;
+  lane(wc.rollingResistance, i) = c.rollingResistance;
+  lane(wc.rollingMass, i) = c.rollingMass;
+  lane(wc.rollingImpulse, i) = c.rollingImpulse;
+  lane(wc.biasRate, i) = c.softness.biasRate;
+  lane(wc.massScale, i) = c.softness.massScale;
+  lane(wc.impulseScale, i) = c.softness.impulseScale;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const ConstraintPoint& p = c.points[k];
+    ContactConstraintWide::Point& wp = wc.points[k];
+    lane(wp.rAx, i) = p.rA.x;
+    lane(wp.rAy, i) = p.rA.y;
+    lane(wp.rBx, i) = p.rB.x;
+    lane(wp.rBy, i) = p.rB.y;
+    lane(wp.adjustedSeparation, i) = p.adjustedSeparation;
+    lane(wp.normalImpulse, i) = p.normalImpulse;
+    lane(wp.tangentImpulse, i) = p.tangentImpulse;
+    lane(wp.maxNormalImpulse, i) = 0.0f;
+    lane(wp.normalMass, i) = p.normalMass;
+    lane(wp.tangentMass, i) = p.tangentMass;
+    lane(wp.relativeVelocity, i) = p.relativeVelocity;
+  }
+}
+
+/// Cross product of a scalar angular velocity and a vector, per lane: w x r = (-w ry, w rx).
+void addAngular(FloatW& vx, FloatW& vy, FloatW w, FloatW rx, FloatW ry) {
+  vx = vx - w * ry;
+  vy = vy + w * rx;
+}
+
+/// Relative normal or tangential velocity of point p along (dx, dy).
+FloatW relativeVelocity(const BodiesW& a, const BodiesW& b, const ContactConstraintWide::Point& p, FloatW dx,
+                        FloatW dy) {
+  FloatW vax = a.vx, vay = a.vy, vbx = b.vx, vby = b.vy;
+  addAngular(vax, vay, a.w, p.rAx, p.rAy);
+  addAngular(vbx, vby, b.w, p.rBx, p.rBy);
+  return (vbx - vax) * dx + (vby - vay) * dy;
+}
+
+/// Applies impulse P = applied (dx, dy) at point p: -P to A, +P to B.
+void applyW(BodiesW& a, BodiesW& b, const ContactConstraintWide& c, const ContactConstraintWide::Point& p, FloatW px,
+            FloatW py) {
+  a.vx = a.vx - c.invMassA * px;
+  a.vy = a.vy - c.invMassA * py;
+  a.w = a.w - c.invIA * (p.rAx * py - p.rAy * px);
+  b.vx = b.vx + c.invMassB * px;
+  b.vy = b.vy + c.invMassB * py;
+  b.w = b.w + c.invIB * (p.rBx * py - p.rBy * px);
+}
+
+void solveWide(ContactConstraintWide& c, BodyState* states, std::uint32_t staticIndex,
+               const ContactSolveParams& params) {
+  BodiesW a = gather(states, c.indexA);
+  BodiesW b = gather(states, c.indexB);
+  const FloatW zero = zeroW();
+  const FloatW one = splatW(1.0f);
+  const FloatW invH = splatW(params.inverseH);
+  const FloatW minBias = splatW(-params.pushSpeed);
+  const FloatW dpx = b.dpx - a.dpx;
+  const FloatW dpy = b.dpy - a.dpy;
+  FloatW totalNormal = zero;
+  for (ContactConstraintWide::Point& p : c.points) {
+    // Separation now: the anchors turned by each body's rotation delta.
+    const FloatW prBx = b.dqc * p.rBx - b.dqs * p.rBy;
+    const FloatW prBy = b.dqs * p.rBx + b.dqc * p.rBy;
+    const FloatW prAx = a.dqc * p.rAx - a.dqs * p.rAy;
+    const FloatW prAy = a.dqs * p.rAx + a.dqc * p.rAy;
+    const FloatW s = (dpx + prBx - prAx) * c.normalX + (dpy + prBy - prAy) * c.normalY + p.adjustedSeparation;
+    const FloatW speculative = greaterW(s, zero);
+    FloatW bias = s * invH;
+    FloatW massScale = one;
+    FloatW impulseScale = zero;
+    const FloatW vn = relativeVelocity(a, b, p, c.normalX, c.normalY);
+    if (params.useBias) {
+      bias = selectW(speculative, bias, maxW(c.biasRate * s, minBias));
+      massScale = selectW(speculative, one, c.massScale);
+      impulseScale = selectW(speculative, zero, c.impulseScale);
+      p.relativeVelocity = selectW(speculative, p.relativeVelocity, minW(p.relativeVelocity, vn));
+    } else {
+      bias = selectW(speculative, bias, zero);
+    }
+    const FloatW impulse = -(p.normalMass * massScale * (vn + bias)) - impulseScale * p.normalImpulse;
+    const FloatW total = maxW(p.normalImpulse + impulse, zero);
+    const FloatW applied = total - p.normalImpulse;
+    p.normalImpulse = total;
+    p.maxNormalImpulse = maxW(p.maxNormalImpulse, applied);
+    totalNormal = totalNormal + total;
+    applyW(a, b, c, p, applied * c.normalX, applied * c.normalY);
+  }
+  const FloatW tx = c.normalY;
+  const FloatW ty = -c.normalX;
+  for (ContactConstraintWide::Point& p : c.points) {
+    const FloatW vt = relativeVelocity(a, b, p, tx, ty);
+    const FloatW limit = c.friction * p.normalImpulse;
+    const FloatW total = maxW(minW(p.tangentImpulse - p.tangentMass * vt, limit), -limit);
+    const FloatW applied = total - p.tangentImpulse;
+    p.tangentImpulse = total;
+    applyW(a, b, c, p, applied * tx, applied * ty);
+  }
+  if (anyNonZeroW(c.rollingMass)) {
+    // Rolling resistance (zero rolling mass in lanes without).
+    const FloatW limit = c.rollingResistance * totalNormal;
+    const FloatW total = maxW(minW(c.rollingImpulse - c.rollingMass * (b.w - a.w), limit), -limit);
+    const FloatW applied = total - c.rollingImpulse;
+    c.rollingImpulse = total;
+    a.w = a.w - c.invIA * applied;
+    b.w = b.w + c.invIB * applied;
+  }
+  scatter(states, c.indexA, staticIndex, a);
+  scatter(states, c.indexB, staticIndex, b);
+}
+
+void warmStartWide(ContactConstraintWide& c, BodyState* states, std::uint32_t staticIndex) {
+  BodiesW a = gatherVelocities(states, c.indexA);
+  BodiesW b = gatherVelocities(states, c.indexB);
+  const FloatW tx = c.normalY;
+  const FloatW ty = -c.normalX;
+  for (const ContactConstraintWide::Point& p : c.points) {
+    const FloatW px = p.normalImpulse * c.normalX + p.tangentImpulse * tx;
+    const FloatW py = p.normalImpulse * c.normalY + p.tangentImpulse * ty;
+    applyW(a, b, c, p, px, py);
+  }
+  a.w = a.w - c.invIA * c.rollingImpulse;
+  b.w = b.w + c.invIB * c.rollingImpulse;
+  scatter(states, c.indexA, staticIndex, a);
+  scatter(states, c.indexB, staticIndex, b);
+}
+
+void restitutionWide(ContactConstraintWide& c, BodyState* states, std::uint32_t staticIndex, float threshold) {
+  if (!anyNonZeroW(c.restitution)) {
+    return; // nothing bounces in this batch (the common case): skip the gather and scatter
+  }
+  BodiesW a = gatherVelocities(states, c.indexA);
+  BodiesW b = gatherVelocities(states, c.indexB);
+  const FloatW zero = zeroW();
+  const FloatW minusThreshold = splatW(-threshold);
+  for (ContactConstraintWide::Point& p : c.points) {
+    // Only points that approached faster than the threshold and took an impulse bounce.
+    const FloatW skip = orW(orW(greaterW(p.relativeVelocity, minusThreshold), equalW(p.maxNormalImpulse, zero)),
+                            equalW(c.restitution, zero));
+    const FloatW vn = relativeVelocity(a, b, p, c.normalX, c.normalY);
+    const FloatW impulse = -(p.normalMass * (vn + c.restitution * p.relativeVelocity));
+    const FloatW total = maxW(p.normalImpulse + impulse, zero);
+    const FloatW applied = selectW(skip, zero, total - p.normalImpulse);
+    p.normalImpulse = p.normalImpulse + applied;
+    applyW(a, b, c, p, applied * c.normalX, applied * c.normalY);
+  }
+  scatter(states, c.indexA, staticIndex, a);
+  scatter(states, c.indexB, staticIndex, b);
+}
+
+// The table's entries: loops over batches, so the call through the table costs once per range.
+
+ContactConstraintWide* batchesOf(void* batches) { return static_cast<ContactConstraintWide*>(batches); }
+
+void fillBatch(void* batches, std::uint32_t batch, const ContactConstraint* lanes, int count,
+               std::uint32_t staticIndex) {
+  ContactConstraintWide& wc = batchesOf(batches)[batch];
+  ContactConstraint none;
+  none.indexA = none.indexB = staticIndex;
+  for (int i = 0; i < simdWidth; ++i) {
+    setLane(wc, i, i < count ? lanes[i] : none);
+  }
+}
+
+void warmStartBatches(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states,
+                      std::uint32_t staticIndex) {
+  for (std::uint32_t i = begin; i < end; ++i) {
+    warmStartWide(batchesOf(batches)[i], states, staticIndex);
+  }
+}
+
+void solveBatches(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states, std::uint32_t staticIndex,
+                  const ContactSolveParams& params) {
+  for (std::uint32_t i = begin; i < end; ++i) {
+    solveWide(batchesOf(batches)[i], states, staticIndex, params);
+  }
+}
+
+void restitutionBatches(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states,
+                        std::uint32_t staticIndex, float threshold) {
+  for (std::uint32_t i = begin; i < end; ++i) {
+    restitutionWide(batchesOf(batches)[i], states, staticIndex, threshold);
+  }
+}
+
+LaneImpulses readLane(const void* batches, std::uint32_t batch, int i) {
+  const ContactConstraintWide& wc = static_cast<const ContactConstraintWide*>(batches)[batch];
+  LaneImpulses out;
+  out.rollingImpulse = lane(wc.rollingImpulse, i);
+  for (std::size_t k = 0; k < 2; ++k) {
+    out.normal[k] = lane(wc.points[k].normalImpulse, i);
+    out.tangent[k] = lane(wc.points[k].tangentImpulse, i);
+    out.maxNormal[k] = lane(wc.points[k].maxNormalImpulse, i);
+  }
+  return out;
+}
+
+static_assert(alignof(ContactConstraintWide) <= wideAlignment);
+static_assert(sizeof(ContactConstraintWide) % alignof(ContactConstraintWide) == 0);
+
+constexpr WideKernels wideKernels{simdName,          simdWidth,     sizeof(ContactConstraintWide), &fillBatch,
+                                  &warmStartBatches, &solveBatches, &restitutionBatches,           &readLane};
+
+} // namespace
+} // namespace impetus::rigid2d::detail
