@@ -72,8 +72,12 @@ struct WideKernels {
                 const ContactSolveParams& params) = nullptr;
   void (*restitution)(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states,
                       std::uint32_t staticIndex, float threshold) = nullptr;
-  LaneImpulses (*read)(const void* batches, std::uint32_t batch, int lane) = nullptr;
+  /// Every lane's impulses of batch `batch` into lanes[0, width).
+  void (*read)(const void* batches, std::uint32_t batch, LaneImpulses* lanes) = nullptr;
 };
+
+/// The most lanes a kernel table may have (AVX2's eight floats).
+inline constexpr int maxWideLanes = 8;
 
 /// Alignment of the wide batches' storage, bytes (enough for 8-lane AVX registers).
 inline constexpr std::size_t wideAlignment = 32;

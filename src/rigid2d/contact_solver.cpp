@@ -347,7 +347,7 @@ void prepareContacts(WorldState& w, const StepContext& context) {
     const std::vector<std::uint32_t>& list = d.colourContacts[colour];
     const std::uint32_t first = d.colourStart[colour];
     w.parallelFor(d.colourStart[colour + 1] - first, 64, [&](std::uint32_t begin, std::uint32_t end) {
-      std::array<ContactConstraint, 8> lanes;
+      std::array<ContactConstraint, maxWideLanes> lanes;
       for (std::uint32_t batch = begin; batch < end; ++batch) {
         const std::size_t k0 = std::size_t{batch} * width;
         const int count = static_cast<int>(std::min<std::size_t>(width, list.size() - k0));
@@ -432,14 +432,16 @@ void storeImpulses(WorldState& w) {
   const int width = d.kernels->width;
   const auto batches = static_cast<std::uint32_t>(d.slots.size() / static_cast<std::size_t>(width));
   w.parallelFor(batches, 64, [&](std::uint32_t begin, std::uint32_t end) {
+    std::array<LaneImpulses, maxWideLanes> lanes;
     for (std::uint32_t batch = begin; batch < end; ++batch) {
+      d.kernels->read(d.batches(), batch, lanes.data());
       for (int i = 0; i < width; ++i) {
         const std::uint32_t slot =
             d.slots[std::size_t{batch} * static_cast<std::size_t>(width) + static_cast<std::size_t>(i)];
         if (slot == noContact) {
           continue;
         }
-        const LaneImpulses impulses = d.kernels->read(d.batches(), batch, i);
+        const LaneImpulses& impulses = lanes[static_cast<std::size_t>(i)];
         Contact& contact = w.contacts[slot];
         contact.rollingImpulse = impulses.rollingImpulse;
         for (int k = 0; k < contact.manifold.pointCount; ++k) {

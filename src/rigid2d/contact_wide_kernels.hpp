@@ -62,12 +62,13 @@ BodiesW gatherVelocities(const BodyState* states, const std::array<std::uint32_t
   return b;
 }
 
-/// Writes the velocities back, except to the static state.
+/// Writes the velocities back; static lanes write to the sink state after the static one
+/// (never read), which keeps the stores free of branches.
 void scatter(BodyState* states, const std::array<std::uint32_t, simdWidth>& index, std::uint32_t staticIndex,
              const BodiesW& b) {
   float* rows[simdWidth];
   for (std::size_t i = 0; i < simdWidth; ++i) {
-    rows[i] = index[i] == staticIndex ? nullptr : &states[index[i]].v.x;
+    rows[i] = &states[index[i] == staticIndex ? staticIndex + 1 : index[i]].v.x;
   }
   storeRowHeadsW(rows, b.vx, b.vy, b.w, zeroW());
 }
@@ -270,23 +271,25 @@ void restitutionBatches(void* batches, std::uint32_t begin, std::uint32_t end, B
   }
 }
 
-LaneImpulses readLane(const void* batches, std::uint32_t batch, int i) {
+void readBatch(const void* batches, std::uint32_t batch, LaneImpulses* lanes) {
   const ContactConstraintWide& wc = static_cast<const ContactConstraintWide*>(batches)[batch];
-  LaneImpulses out;
-  out.rollingImpulse = lane(wc.rollingImpulse, i);
-  for (std::size_t k = 0; k < 2; ++k) {
-    out.normal[k] = lane(wc.points[k].normalImpulse, i);
-    out.tangent[k] = lane(wc.points[k].tangentImpulse, i);
-    out.maxNormal[k] = lane(wc.points[k].maxNormalImpulse, i);
+  for (int i = 0; i < simdWidth; ++i) {
+    LaneImpulses& out = lanes[i];
+    out.rollingImpulse = lane(wc.rollingImpulse, i);
+    for (std::size_t k = 0; k < 2; ++k) {
+      out.normal[k] = lane(wc.points[k].normalImpulse, i);
+      out.tangent[k] = lane(wc.points[k].tangentImpulse, i);
+      out.maxNormal[k] = lane(wc.points[k].maxNormalImpulse, i);
+    }
   }
-  return out;
 }
 
+static_assert(simdWidth <= maxWideLanes);
 static_assert(alignof(ContactConstraintWide) <= wideAlignment);
 static_assert(sizeof(ContactConstraintWide) % alignof(ContactConstraintWide) == 0);
 
 constexpr WideKernels wideKernels{simdName,          simdWidth,     sizeof(ContactConstraintWide), &fillBatch,
-                                  &warmStartBatches, &solveBatches, &restitutionBatches,           &readLane};
+                                  &warmStartBatches, &solveBatches, &restitutionBatches,           &readBatch};
 
 } // namespace
 } // namespace impetus::rigid2d::detail

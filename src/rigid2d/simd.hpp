@@ -91,7 +91,7 @@ inline void loadRowsW(const float* const (&rows)[8], FloatW (&columns)[8]) {
   columns[7].v = _mm256_permute2f128_ps(s3, s7, 0x31);
 }
 
-/// Writes columns c0..c3 as the first four floats of each row (null rows are skipped).
+/// Writes columns c0..c3 as the first four floats of each row .
 inline void storeRowHeadsW(float* const (&rows)[8], FloatW c0, FloatW c1, FloatW c2, FloatW c3) {
   for (int half = 0; half < 2; ++half) {
     __m128 a = half == 0 ? _mm256_castps256_ps128(c0.v) : _mm256_extractf128_ps(c0.v, 1);
@@ -101,9 +101,7 @@ inline void storeRowHeadsW(float* const (&rows)[8], FloatW c0, FloatW c1, FloatW
     _MM_TRANSPOSE4_PS(a, b, c, d);
     const __m128 out[4] = {a, b, c, d};
     for (int i = 0; i < 4; ++i) {
-      if (float* row = rows[4 * half + i]; row != nullptr) {
-        _mm_storeu_ps(row, out[i]);
-      }
+      _mm_storeu_ps(rows[4 * half + i], out[i]);
     }
   }
 }
@@ -254,14 +252,12 @@ inline void loadRowHeadsW(const float* const (&rows)[4], FloatW& c0, FloatW& c1,
   transposeW(c0, c1, c2, c3);
 }
 
-/// Writes columns c0..c3 as the first four floats of each row (null rows are skipped).
+/// Writes columns c0..c3 as the first four floats of each row .
 inline void storeRowHeadsW(float* const (&rows)[4], FloatW c0, FloatW c1, FloatW c2, FloatW c3) {
   transposeW(c0, c1, c2, c3);
   const FloatW out[4] = {c0, c1, c2, c3};
   for (int i = 0; i < 4; ++i) {
-    if (rows[i] != nullptr) {
-      storeW(rows[i], out[i]);
-    }
+    storeW(rows[i], out[i]);
   }
 }
 #endif

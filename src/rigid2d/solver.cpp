@@ -44,9 +44,11 @@ void buildSolverBodies(WorldState& w) {
     }
   }
   const auto n = static_cast<std::uint32_t>(w.awakeBodies.size());
-  w.states.resize(n + 1);
+  w.states.resize(n + 2);
   w.sims.resize(n);
   w.states[n] = BodyState{}; // the static state: at rest, never written
+  // states[n + 1]: where the wide contact solve writes its static lanes (never read), so that
+  // its stores need no branch.
   const Vec2f gravity = w.def.gravity;
   w.parallelFor(n, 256, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t i = begin; i < end; ++i) {

@@ -178,8 +178,9 @@ struct WorldState {
   float lastInverseH = 0.0f;              ///< the last step's substep rate, 1/s (impulses to forces)
   std::vector<std::uint8_t> touchChanges; ///< scratch of the collide pass: 1 began, 2 ended touching
 
-  /// This step's moving bodies in solver order, their solver state (plus one last, never
-  /// written state standing for every static body) and integration data.
+  /// This step's moving bodies in solver order, their solver state (plus, at staticIndex(), a
+  /// never written state standing for every static body, and after it a never read one that
+  /// takes the wide solver's writes to static lanes) and integration data.
   std::vector<std::uint32_t> awakeBodies;
   std::vector<BodyState> states;
   std::vector<BodySim> sims;
