@@ -1,0 +1,166 @@
+// impetus-samples headless: every sample, the command line, and one reference picture.
+//
+// Each sample runs twice. First without rendering (--no-render: the simulation, the drawing into
+// memory and the panel's layout, no OpenGL), under the sanitizers' leak check when built with
+// them. Then with Mesa's software OpenGL through SDL's offscreen driver to a 320 x 240 PNG; Mesa
+// and SDL's drivers keep allocations until exit that LeakSanitizer reports, so that run alone
+// has leak detection off (the first run covers our own code).
+#include "cli/cli_process.hpp"
+#include "image_compare.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace impetus::testing {
+namespace {
+
+/// "Category/Name" of every sample, from the app itself (run when the tests are listed).
+std::vector<std::string> sampleNames() {
+  std::vector<std::string> names;
+  FILE* pipe = popen((shellQuote(IMPETUS_CLI_PATH) + " --list").c_str(), "r");
+  if (pipe == nullptr) {
+    return names;
+  }
+  char line[1024];
+  while (std::fgets(line, sizeof line, pipe) != nullptr) {
+    std::istringstream in(line);
+    std::string name;
+    if (in >> name) {
+      names.push_back(name);
+    }
+  }
+  pclose(pipe);
+  return names;
+}
+
+/// A gtest-friendly name: "Engine/Joint grid" -> "Engine_Joint_grid".
+std::string testName(const std::string& sample) {
+  std::string out;
+  for (const char c : sample) {
+    out.push_back(std::isalnum(static_cast<unsigned char>(c)) != 0 ? c : '_');
+  }
+  return out;
+}
+
+std::string screenshotPath(const std::string& sample) {
+  return std::string(IMPETUS_SCREENSHOT_DIR) + "/" + testName(sample) + ".png";
+}
+
+/// Runs the app with `args`, and `environment` ("NAME=value ...", shell-quoted by the caller)
+/// before it; stdout and stderr captured (cli_process.hpp's impetus() names its stderr file after
+/// the test, and parameterized tests have a '/' in their names).
+CliRun runApp(const std::vector<std::string>& args, const std::string& environment = "") {
+  static int calls = 0;
+  const std::string errPath = ::testing::TempDir() + "impetus_samples_stderr_" + std::to_string(getpid()) + "_" +
+                              std::to_string(++calls) + ".txt";
+  // Appends only: GCC 12 warns falsely (-Wrestrict) about some string concatenations.
+  std::string command;
+  if (!environment.empty()) {
+    command.append(environment).append(" ");
+  }
+  command.append(shellQuote(IMPETUS_CLI_PATH));
+  for (const std::string& a : args) {
+    command.append(" ").append(shellQuote(a));
+  }
+  command.append(" 2>").append(shellQuote(errPath));
+  CliRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) {
+    return run;
+  }
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) {
+    run.out.append(buffer, n);
+  }
+  const int raw = pclose(pipe);
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream err(errPath);
+  std::stringstream ss;
+  ss << err.rdbuf();
+  run.err = ss.str();
+  std::filesystem::remove(errPath);
+  return run;
+}
+
+/// Rendering runs with leak detection off: Mesa's and SDL's drivers keep allocations until exit.
+CliRun renderRun(const std::vector<std::string>& args) {
+  const char* old = std::getenv("ASAN_OPTIONS");
+  std::string options = old != nullptr ? old : "";
+  options.append(options.empty() ? "" : ":").append("detect_leaks=0");
+  std::string environment = "ASAN_OPTIONS=";
+  environment.append(shellQuote(options));
+  return runApp(args, environment);
+}
+
+class SampleRuns : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SampleRuns, Runs120FramesFiniteAndItsScreenshotIsNotBlank) {
+  const std::string& sample = GetParam();
+  const CliRun simulated = runApp({"--sample", sample, "--frames", "120", "--no-render"});
+  ASSERT_EQ(simulated.status, 0) << simulated.out << simulated.err;
+  EXPECT_NE(simulated.out.find("state finite"), std::string::npos) << simulated.out;
+
+  // The scene alone (--hide-ui), so the colour count measures what the sample drew.
+  const std::string png = screenshotPath(sample);
+  std::filesystem::remove(png);
+  const CliRun rendered = renderRun(
+      {"--sample", sample, "--frames", "120", "--screenshot", png, "--width", "320", "--height", "240", "--hide-ui"});
+  ASSERT_EQ(rendered.status, 0) << rendered.out << rendered.err;
+  const std::optional<Image> image = readPng(png);
+  ASSERT_TRUE(image.has_value()) << png;
+  EXPECT_EQ(image->width, 320);
+  EXPECT_EQ(image->height, 240);
+  // The background and the grid alone are three colours; a sample's shapes, fills and lines add
+  // more.
+  EXPECT_GE(distinctColours(*image), 6u) << png << " looks blank";
+}
+
+INSTANTIATE_TEST_SUITE_P(Samples, SampleRuns, ::testing::ValuesIn(sampleNames()),
+                         [](const ::testing::TestParamInfo<std::string>& p) { return testName(p.param); });
+
+TEST(SamplesApp, ListsEverySampleOnceAsCategorySlashName) {
+  const std::vector<std::string> names = sampleNames();
+  ASSERT_FALSE(names.empty());
+  const std::set<std::string> unique(names.begin(), names.end());
+  EXPECT_EQ(unique.size(), names.size());
+  for (const std::string& name : names) {
+    EXPECT_NE(name.find('/'), std::string::npos) << name;
+  }
+  EXPECT_TRUE(unique.contains("Engine/Pyramid"));
+}
+
+TEST(SamplesApp, RefusesAnUnknownSample) {
+  expectUsageError(impetus({"--sample", "Engine/No such sample", "--frames", "1", "--no-render"}),
+                   "unknown sample 'Engine/No such sample'");
+}
+
+TEST(SamplesApp, RefusesFramesBelowOne) {
+  expectUsageError(impetus({"--sample", "Engine/Pyramid", "--frames", "0", "--no-render"}), "--frames");
+  expectUsageError(impetus({"--sample", "Engine/Pyramid", "--frames", "-5", "--no-render"}), "--frames");
+  expectUsageError(impetus({"--sample", "Engine/Pyramid", "--frames", "ten", "--no-render"}), "not a whole number");
+}
+
+TEST(SamplesApp, RefusesAnUnwritableScreenshotPath) {
+  expectUsageError(impetus({"--sample", "Engine/Pyramid", "--frames", "1", "--screenshot", "/nonexistent/dir/x.png"}),
+                   "does not exist");
+}
+
+TEST(SamplesApp, RefusesAHeadlessRunWithoutFramesAndUnknownOptions) {
+  expectUsageError(impetus({"--sample", "Engine/Pyramid", "--screenshot", "x.png"}), "needs --frames");
+  expectUsageError(impetus({"--frobnicate"}), "unknown option '--frobnicate'");
+  expectUsageError(impetus({"--width", "10", "--no-render", "--frames", "1"}), "--width");
+}
+
+} // namespace
+} // namespace impetus::testing
