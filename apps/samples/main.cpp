@@ -23,8 +23,9 @@ int main(int argc, char** argv) {
   }
   const auto& registry = sampleRegistry();
   if (options.list) {
+    // One sample a line: its "Category/Name" (which may hold spaces), a tab, what it shows.
     for (const SampleInfo& info : registry) {
-      std::printf("%-28s %s\n", info.fullName().c_str(), info.description.c_str());
+      std::printf("%s\t%s\n", info.fullName().c_str(), info.description.c_str());
     }
     return 0;
   }

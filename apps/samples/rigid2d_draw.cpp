@@ -37,10 +37,15 @@ void drawJoint(const World& world, DebugDraw& draw, const JointDrawInfo& info) {
     draw.segment(xfA.p, xfB.p, c.withAlpha(0.5f));
     break;
   default:
-    // As Box2D draws them: body A's origin to its anchor, the anchors, B's anchor to its origin.
-    draw.segment(xfA.p, pA, c.withAlpha(0.6f));
+    // As Box2D draws them: body A's origin to its anchor, the anchors, B's anchor to its origin
+    // (not from a static body's origin: the ground's is usually far away).
+    if (world.bodyType(a) != BodyType::staticBody) {
+      draw.segment(xfA.p, pA, c.withAlpha(0.6f));
+    }
     draw.segment(pA, pB, c);
-    draw.segment(xfB.p, pB, c.withAlpha(0.6f));
+    if (world.bodyType(b) != BodyType::staticBody) {
+      draw.segment(xfB.p, pB, c.withAlpha(0.6f));
+    }
     draw.point(pA, 5.0f, c);
     break;
   }

@@ -41,6 +41,8 @@ protected:
     joints_.push_back({id, def.localAnchorA, def.localAnchorB});
     return id;
   }
+  /// The joints made through createJoint or recordJoint (the mouse's included), in order.
+  [[nodiscard]] const std::vector<JointDrawInfo>& recordedJoints() const noexcept { return joints_; }
   /// Remembers the anchors of a joint made elsewhere.
   void recordJoint(const JointDrawInfo& info) { joints_.push_back(info); }
 

@@ -33,10 +33,11 @@ std::vector<std::string> sampleNames() {
   }
   char line[1024];
   while (std::fgets(line, sizeof line, pipe) != nullptr) {
-    std::istringstream in(line);
-    std::string name;
-    if (in >> name) {
-      names.push_back(name);
+    // "Category/Name<tab>description": names may hold spaces.
+    const std::string text(line);
+    const std::size_t tab = text.find('\t');
+    if (tab != std::string::npos && tab > 0) {
+      names.push_back(text.substr(0, tab));
     }
   }
   pclose(pipe);
@@ -138,6 +139,7 @@ TEST(SamplesApp, ListsEverySampleOnceAsCategorySlashName) {
     EXPECT_NE(name.find('/'), std::string::npos) << name;
   }
   EXPECT_TRUE(unique.contains("Engine/Pyramid"));
+  EXPECT_TRUE(unique.contains("Engine/Joint grid"));
 }
 
 TEST(SamplesApp, RefusesAnUnknownSample) {
