@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
 
   auto* run = app.add_subcommand(
       "run", "simulate a scene file (particles or rigid2d): impetus run SCENE.json --steps N [--dt H] [--out FILE] "
-             "[--every K] [--events FILE.csv]");
+             "[--every K] [--events FILE.csv] [--threads T] [--hash]");
   impetus::cli::RunOptions runOptions;
   run->add_option("scene", runOptions.scene, "scene file (JSON, docs/scene-format.md, docs/scene-format-2d.md)")
       ->required();
@@ -43,6 +43,9 @@ int main(int argc, char** argv) {
   run->add_option("--out", runOptions.out, "trajectory file: .csv or .json");
   run->add_option("--every", runOptions.every, "record every K-th step (default 1)");
   run->add_option("--events", runOptions.events, "rigid2d scenes: contact and joint events, .csv");
+  run->add_option("--threads", runOptions.threads,
+                  "rigid2d scenes: threads stepping the world (results are bit-identical at any count)");
+  run->add_flag("--hash", runOptions.hash, "print the final state's hash (identical states, identical hashes)");
 
   try {
     app.parse(argc, argv);

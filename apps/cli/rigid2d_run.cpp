@@ -6,6 +6,7 @@
 
 #include "rigid2d_scene.hpp"
 
+#include <impetus/core/task_runner.hpp>
 #include <impetus/error.hpp>
 
 #include <fmt/core.h>
@@ -374,7 +375,11 @@ int runRigid2dScene(const RunOptions& o, const nlohmann::json& doc) {
   if (!o.events.empty() && std::filesystem::path(o.events).extension() != ".csv") {
     throw Error("--events", "--events = " + o.events + ": the file name must end in .csv");
   }
-  Rigid2dScene scene = parseRigid2dScene(doc);
+  std::unique_ptr<ThreadPool> pool;
+  if (o.threads > 1) {
+    pool = std::make_unique<ThreadPool>(o.threads);
+  }
+  Rigid2dScene scene = parseRigid2dScene(doc, pool.get());
   World& world = scene.world;
   const auto dt = static_cast<float>(o.dt);
   std::unique_ptr<Recorder> recorder;
@@ -451,6 +456,9 @@ int runRigid2dScene(const RunOptions& o, const nlohmann::json& doc) {
                all.begins + all.ends + all.hits + all.sensorBegins + all.sensorEnds + all.breaks);
   }
   fmt::print("\n");
+  if (o.hash) {
+    printStateHash(world.stateHash());
+  }
   return 0;
 }
 

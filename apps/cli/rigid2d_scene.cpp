@@ -86,7 +86,7 @@ struct Material {
 
 class Loader {
 public:
-  explicit Loader(Rigid2dScene& scene) : scene_(scene) {}
+  Loader(Rigid2dScene& scene, TaskRunner* runner) : scene_(scene), runner_(runner) {}
 
   void load(const json& doc) {
     Fields top(doc, "");
@@ -98,6 +98,7 @@ public:
       def = worldDef(*w);
     }
     gravity_ = def.gravity;
+    def.taskRunner = runner_;
     scene_.world = World(def);
     if (const json* m = top.find("materials")) {
       materials(*m);
@@ -656,6 +657,7 @@ private:
   }
 
   Rigid2dScene& scene_;
+  TaskRunner* runner_ = nullptr; ///< steps the world's parallel loops (not owned)
   Vec2f gravity_;
   std::map<std::string, Material> materials_;
   std::map<std::string, std::size_t> names_;
@@ -680,9 +682,9 @@ std::string sceneKind(const json& doc) {
   return kind;
 }
 
-Rigid2dScene parseRigid2dScene(const json& doc) {
+Rigid2dScene parseRigid2dScene(const json& doc, TaskRunner* runner) {
   Rigid2dScene scene;
-  Loader(scene).load(doc);
+  Loader(scene, runner).load(doc);
   return scene;
 }
 

@@ -3,6 +3,7 @@
 // `impetus run` for 2D scenes. Format: docs/scene-format-2d.md.
 #pragma once
 
+#include <impetus/core/task_runner.hpp>
 #include <impetus/rigid2d/effectors.hpp>
 #include <impetus/rigid2d/world.hpp>
 
@@ -46,7 +47,8 @@ struct Rigid2dScene {
 /// with the JSON path of the offending value (e.g. "bodies[3].shapes[0].density = -1: must be
 /// finite and non-negative") for unknown keys, missing or invalid values, unknown body names
 /// and degenerate geometry; nothing of a scene that fails is returned.
-[[nodiscard]] Rigid2dScene parseRigid2dScene(const nlohmann::json& doc);
+/// `runner` (optional, not owned; must outlive the scene) steps the world's parallel loops.
+[[nodiscard]] Rigid2dScene parseRigid2dScene(const nlohmann::json& doc, TaskRunner* runner = nullptr);
 
 /// Parses JSON text (malformed JSON is "json: malformed JSON: ...") and builds the scene.
 [[nodiscard]] Rigid2dScene parseRigid2dScene(const std::string& jsonText);

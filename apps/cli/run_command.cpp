@@ -183,6 +183,9 @@ void validate(const RunOptions& o) {
   if (o.every < 1) {
     throwInvalid("--every", static_cast<double>(o.every), "must be a whole number >= 1");
   }
+  if (o.threads < 1 || o.threads > 64) {
+    throwInvalid("--threads", static_cast<double>(o.threads), "must be a whole number between 1 and 64");
+  }
   if (!o.out.empty()) {
     const std::string ext = std::filesystem::path(o.out).extension().string();
     if (ext != ".csv" && ext != ".json") {
@@ -202,6 +205,8 @@ bool finite(const ParticleWorld& world, const Energies& e) {
 
 } // namespace
 
+void printStateHash(std::uint64_t hash) { fmt::print("state hash: {:016x}\n", hash); }
+
 int runScene(const RunOptions& o) {
   try {
     validate(o);
@@ -213,6 +218,9 @@ int runScene(const RunOptions& o) {
     }
     if (!o.events.empty()) {
       throw Error("--events", "--events = " + o.events + ": only rigid2d scenes have contact events");
+    }
+    if (o.threads != 1) {
+      throwInvalid("--threads", static_cast<double>(o.threads), "particle scenes run on one thread");
     }
     doc.erase("kind");
     ParticleScene scene = parseScene(doc.dump());
@@ -277,6 +285,9 @@ int runScene(const RunOptions& o) {
       fmt::print(" Wrote {} ({} frames, {} particle rows).", o.out, recorder->frames(), recorder->rows());
     }
     fmt::print("\n");
+    if (o.hash) {
+      printStateHash(world.stateHash());
+    }
     return 0;
   } catch (const Error& e) {
     fmt::print(stderr, "error: {}\n", e.what());

@@ -15,11 +15,16 @@ struct RunOptions {
   std::string out;        ///< .csv or .json file for the trajectory; empty: none
   std::int64_t every = 1; ///< record every K-th step (and the first and last), >= 1
   std::string events;     ///< .csv file for a rigid2d scene's contact and joint events; empty: none
+  int threads = 1;        ///< rigid2d scenes: threads stepping the world (a ThreadPool), 1 to 64
+  bool hash = false;      ///< print the final state's hash (World::stateHash) on a line of its own
 };
 
 /// Loads the scene, steps it and writes the trajectory; prints a one-paragraph summary.
 /// Exit status 0; 2 with one line on stderr for a bad scene or argument; 1 if the simulation
 /// produced a non-finite state.
 int runScene(const RunOptions& options);
+
+/// The line --hash prints: "state hash: " and 16 hex digits.
+void printStateHash(std::uint64_t hash);
 
 } // namespace impetus::cli

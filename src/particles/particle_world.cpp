@@ -1,6 +1,7 @@
 // ParticleWorld: storage, ids, the step's order, emitters and energies.
 #include "particles/particle_world_impl.hpp"
 
+#include <impetus/core/state_hash.hpp>
 #include <impetus/error.hpp>
 #include <impetus/math/scalar.hpp>
 #include <impetus/math/validate.hpp>
@@ -189,6 +190,21 @@ void ParticleWorld::applyImpulse(ParticleId id, const Vec3f& impulse) {
 std::span<const Vec3f> ParticleWorld::positions() const noexcept { return impl_->particles.position; }
 std::span<const Vec3f> ParticleWorld::velocities() const noexcept { return impl_->particles.velocity; }
 std::span<const ParticleId> ParticleWorld::ids() const noexcept { return impl_->particles.id; }
+
+std::uint64_t ParticleWorld::stateHash() const {
+  StateHash hash;
+  const auto& p = impl_->particles;
+  for (std::size_t i = 0; i < p.id.size(); ++i) {
+    hash.add(p.id[i].index);
+    hash.add(p.id[i].generation);
+    for (const Vec3f* v : {&p.position[i], &p.velocity[i]}) {
+      hash.add(v->x);
+      hash.add(v->y);
+      hash.add(v->z);
+    }
+  }
+  return hash.value();
+}
 
 namespace {
 

@@ -1,6 +1,7 @@
 // Ray casts and overlap queries against the world's shapes.
 #include "rigid2d/world_impl.hpp"
 
+#include <impetus/core/state_hash.hpp>
 #include <impetus/error.hpp>
 #include <impetus/math/validate.hpp>
 
@@ -144,6 +145,24 @@ std::optional<RayHit> World::castShape(const ShapeProxy& proxy, const Transform2
   w.staticTree.query(swept, visit);
   w.movingTree.query(swept, visit);
   return best;
+}
+
+std::uint64_t World::stateHash() const {
+  StateHash hash;
+  for (const detail::Body& b : impl_->bodies) {
+    if (!b.alive) {
+      continue;
+    }
+    hash.add(b.transform.p.x);
+    hash.add(b.transform.p.y);
+    hash.add(b.transform.q.c);
+    hash.add(b.transform.q.s);
+    hash.add(b.linearVelocity.x);
+    hash.add(b.linearVelocity.y);
+    hash.add(b.angularVelocity);
+    hash.add(b.awake);
+  }
+  return hash.value();
 }
 
 void World::bodyIds(std::vector<BodyId>& out) const {

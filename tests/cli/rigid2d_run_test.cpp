@@ -463,4 +463,52 @@ TEST(Rigid2dRun, bad_arguments_exit_two_and_write_nothing) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+/// A scene big enough for the step's parallel loops to split over threads: 1,200 boxes and
+/// circles dropped in a walled bin (no sleeping), with restitution and rolling resistance.
+std::string binScene() {
+  json bodies = json::array();
+  bodies.push_back({{"name", "bin"},
+                    {"type", "static"},
+                    {"shapes",
+                     {{{"type", "box"}, {"half_extents", {30, 0.5}}, {"center", {0, -0.5}}},
+                      {{"type", "segment"}, {"point1", {-30, 0}}, {"point2", {-30, 60}}},
+                      {{"type", "segment"}, {"point1", {30, 0}}, {"point2", {30, 60}}}}}});
+  for (int i = 0; i < 1200; ++i) {
+    const double x = -28.0 + 1.15 * (i % 48);
+    const double y = 1.0 + 1.2 * (i / 48);
+    json shape = i % 2 == 0
+                     ? json{{"type", "box"}, {"half_extents", {0.45, 0.45}}}
+                     : json{{"type", "circle"}, {"radius", 0.45}, {"restitution", 0.3}, {"rolling_resistance", 0.02}};
+    std::string name = "b"; // (not "b" + std::to_string(i): GCC 12's false -Wrestrict)
+    name += std::to_string(i);
+    bodies.push_back({{"name", name}, {"position", {x, y}}, {"shapes", {shape}}});
+  }
+  return json{{"kind", "rigid2d"}, {"world", {{"enable_sleep", false}}}, {"bodies", bodies}}.dump();
+}
+
+std::string hashLine(const CliRun& run) {
+  const std::size_t at = run.out.find("state hash: ");
+  return at == std::string::npos ? std::string() : run.out.substr(at, 12 + 16);
+}
+
+TEST(Rigid2dRun, hash_is_the_same_run_after_run_and_at_any_thread_count) {
+  const std::string path = writeTemp("bin.json", binScene());
+  const CliRun first = impetus({"run", path, "--steps", "90", "--hash"});
+  ASSERT_EQ(first.status, 0) << first.err;
+  const std::string reference = hashLine(first);
+  ASSERT_EQ(reference.size(), 28U) << first.out;
+  for (const char* threads : {"1", "2", "4"}) {
+    const CliRun run = impetus({"run", path, "--steps", "90", "--threads", threads, "--hash"});
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(hashLine(run), reference) << threads << " threads";
+  }
+  // One step more is another state.
+  EXPECT_NE(hashLine(impetus({"run", path, "--steps", "91", "--hash"})), reference);
+}
+
+TEST(Rigid2dRun, threads_must_be_sensible) {
+  expectUsageError(impetus({"run", scene("pyramid.json"), "--steps", "1", "--threads", "0"}), "--threads = 0");
+  expectUsageError(impetus({"run", scene("pyramid.json"), "--steps", "1", "--threads", "65"}), "--threads = 65");
+}
+
 } // namespace

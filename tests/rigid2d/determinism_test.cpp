@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace impetus::rigid2d {
 namespace {
 
@@ -18,6 +20,21 @@ TEST(Determinism2D, identical_run_after_run_and_at_any_thread_count) {
     ThreadPool pool(threads);
     EXPECT_EQ(runMixedScene(&pool), reference) << threads << " threads";
   }
+}
+
+TEST(Determinism2D, the_state_hash_sees_one_bit_of_one_body) {
+  World world;
+  BodyDef def;
+  def.type = BodyType::dynamicBody;
+  const BodyId a = world.createBody(def);
+  def.position = {2.0f, 0.0f};
+  world.createBody(def);
+  const std::uint64_t before = world.stateHash();
+  EXPECT_EQ(world.stateHash(), before);
+  world.setLinearVelocity(a, {std::nextafter(0.0f, 1.0f), 0.0f}); // the smallest float
+  EXPECT_NE(world.stateHash(), before);
+  world.setLinearVelocity(a, {});
+  EXPECT_EQ(world.stateHash(), before);
 }
 
 TEST(Determinism2D, identical_at_any_simd_width) {

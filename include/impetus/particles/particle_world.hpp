@@ -23,6 +23,7 @@
 
 #include <impetus/particles/particle_types.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <span>
@@ -92,6 +93,9 @@ public:
   [[nodiscard]] std::span<const Vec3f> positions() const noexcept;
   [[nodiscard]] std::span<const Vec3f> velocities() const noexcept;
   [[nodiscard]] std::span<const ParticleId> ids() const noexcept;
+  /// A hash of the exact state of every particle, in the dense order: id, position, velocity
+  /// (StateHash: FNV-1a over the bits). Equal hashes: identical states.
+  [[nodiscard]] std::uint64_t stateHash() const;
 
   // Obstacles (static).
   ObstacleId addObstacle(const PlaneObstacle& plane, const SurfaceMaterial& material = {});

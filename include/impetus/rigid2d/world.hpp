@@ -21,6 +21,7 @@
 #include <impetus/rigid2d/joint.hpp>
 #include <impetus/rigid2d/types.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -182,6 +183,11 @@ public:
   [[nodiscard]] std::vector<ShapeId> queryPoint(const Vec2f& point) const;
   /// The body a shape belongs to.
   [[nodiscard]] BodyId shapeBody(ShapeId shape) const;
+
+  /// A hash of the exact state of every live body, in slot order: origin position, rotation,
+  /// linear and angular velocity, awake flag (StateHash: FNV-1a over the bits). Equal hashes:
+  /// identical states; what the determinism tests and `impetus run --hash` compare.
+  [[nodiscard]] std::uint64_t stateHash() const;
 
   // Inspection (for effectors, tools, renderers).
   /// Every live body's id, in slot order, into `out` (cleared first; its capacity is reused).
