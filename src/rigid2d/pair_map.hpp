@@ -65,6 +65,13 @@ public:
   }
 
   [[nodiscard]] std::size_t size() const noexcept { return count_; }
+  /// Empties the map, keeping its capacity.
+  void clear() noexcept {
+    for (Slot& slot : slots_) {
+      slot = Slot{};
+    }
+    count_ = 0;
+  }
 
 private:
   struct Slot {

@@ -35,14 +35,11 @@ namespace {
 
 using detail::Body;
 using detail::Contact;
+using detail::pairKey;
 using detail::Shape;
 using detail::shapeBox;
 using detail::shouldCollide;
 using detail::WorldState;
-
-std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-}
 
 /// Mass, centre of mass and inertia of a body from its shapes' densities.
 void updateMass(WorldState& w, Body& b) {

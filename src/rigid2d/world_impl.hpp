@@ -15,6 +15,7 @@
 
 #include "rigid2d/pair_map.hpp"
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <string>
@@ -84,6 +85,11 @@ struct Body {
     sleepTime = 0.0f;
   }
 };
+
+/// The contact index's key of a shape pair: (lower slot << 32) | higher slot.
+[[nodiscard]] inline std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) noexcept {
+  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+}
 
 /// A pair of shapes whose fat boxes overlap: touching when its manifold has points.
 struct Contact {

@@ -10,9 +10,9 @@
 
 namespace impetus::rigid2d::test {
 
-/// A busy scene (a pyramid, a rain of circles and capsules with restitution and rolling
-/// resistance, a spinning kinematic paddle) stepped 120 times; the hash of its final state.
-inline std::uint64_t runMixedScene(TaskRunner* runner, SimdLevel simd = SimdLevel::widest) {
+/// A busy scene: a pyramid, a rain of circles and capsules with restitution and rolling
+/// resistance, a spinning kinematic paddle, a jointed chain, a rope; built, not yet stepped.
+inline World makeMixedScene(TaskRunner* runner = nullptr, SimdLevel simd = SimdLevel::widest) {
   WorldDef def;
   def.taskRunner = runner;
   def.simd = simd;
@@ -80,6 +80,12 @@ inline std::uint64_t runMixedScene(TaskRunner* runner, SimdLevel simd = SimdLeve
   paddle.angularVelocity = 1.5f;
   const BodyId p = world.createBody(paddle);
   world.createShape(p, {}, makeBox(4.0f, 0.2f));
+  return world;
+}
+
+/// The hash of the scene's state after 120 steps of 1/60 s.
+inline std::uint64_t runMixedScene(TaskRunner* runner, SimdLevel simd = SimdLevel::widest) {
+  World world = makeMixedScene(runner, simd);
   for (int step = 0; step < 120; ++step) {
     world.step(1.0f / 60.0f);
   }

@@ -21,6 +21,7 @@
 #include <impetus/rigid2d/joint.hpp>
 #include <impetus/rigid2d/types.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -71,6 +72,21 @@ struct RayHit {
   Vec2f point;
   Vec2f normal;
   float fraction = 0.0f;
+};
+
+/// The dynamic state of a World, saved for rollback (World::saveState, World::restoreState):
+/// bodies' motion, forces and sleep, the broadphase's fat boxes, the contacts with their
+/// warm-start impulses, and the joints (settings and accumulated impulses). Not the world's
+/// structure: it restores into the world it came from, with the same bodies, shapes and joints.
+class WorldSnapshot {
+public:
+  /// Bytes the snapshot holds.
+  [[nodiscard]] std::size_t sizeBytes() const noexcept { return bytes_.size(); }
+  [[nodiscard]] bool empty() const noexcept { return bytes_.empty(); }
+
+private:
+  friend class World;
+  std::vector<std::byte> bytes_;
 };
 
 class World {
@@ -188,6 +204,15 @@ public:
   /// linear and angular velocity, awake flag (StateHash: FNV-1a over the bits). Equal hashes:
   /// identical states; what the determinism tests and `impetus run --hash` compare.
   [[nodiscard]] std::uint64_t stateHash() const;
+
+  /// Saves the world's dynamic state into `out` (its capacity is reused: no allocation once it
+  /// has held a snapshot of this size). Restoring it and stepping again gives bit-identical
+  /// results (same stateHash after the same steps), for rollback and replays.
+  void saveState(WorldSnapshot& out) const;
+  /// Puts the world back in the state `snapshot` saved, and clears this step's events. Throws
+  /// impetus::Error naming "snapshot" if it is empty or was saved from a world whose bodies,
+  /// shapes or joints differ from this one's (created or destroyed since).
+  void restoreState(const WorldSnapshot& snapshot);
 
   // Inspection (for effectors, tools, renderers).
   /// Every live body's id, in slot order, into `out` (cleared first; its capacity is reused).

@@ -1,0 +1,235 @@
+// Snapshots of a world's dynamic state, for rollback (lockstep games rewind and replay a few
+// frames when late input arrives) and replays.
+//
+// What the next steps depend on, and so what is saved: every live body's motion, applied force
+// and sleep state; every shape's fat box (it decides when the broadphase looks for new pairs);
+// the broadphase's move buffer; the contact pool slot by slot (slot order is the solve order)
+// with its free list and every contact's manifold and warm-start impulses; every joint. What is
+// not: the trees' shape (new pairs are sorted before they become contacts, so the order a tree
+// finds them in never matters), the solver's scratch (rebuilt each step), and the structure
+// (bodies, shapes and joints), which must be the one the snapshot was saved from: a hash of the
+// live ids and body types guards it.
+#include "rigid2d/joints.hpp"
+#include "rigid2d/world_impl.hpp"
+
+#include <impetus/core/state_hash.hpp>
+#include <impetus/error.hpp>
+
+#include <cstring>
+#include <type_traits>
+
+namespace impetus::rigid2d {
+namespace {
+
+using detail::Body;
+using detail::Contact;
+using detail::Joint;
+using detail::Shape;
+using detail::WorldState;
+
+constexpr std::uint32_t snapshotMagic = 0x53443249; // "I2DS"
+constexpr std::uint32_t snapshotVersion = 1;
+
+static_assert(std::is_trivially_copyable_v<Contact>);
+static_assert(std::is_trivially_copyable_v<Joint>);
+
+/// Appends trivially copyable values to a byte buffer.
+class Writer {
+public:
+  explicit Writer(std::vector<std::byte>& bytes) : bytes_(bytes) { bytes_.clear(); }
+  template <class T> void put(const T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + sizeof(T));
+    std::memcpy(bytes_.data() + at, &value, sizeof(T));
+  }
+
+private:
+  std::vector<std::byte>& bytes_;
+};
+
+/// Reads them back in the same order; running past the end is a truncated snapshot.
+class Reader {
+public:
+  explicit Reader(const std::vector<std::byte>& bytes) : bytes_(bytes) {}
+  template <class T> T get() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    if (at_ + sizeof(T) > bytes_.size()) {
+      throw Error("snapshot", "snapshot: truncated (" + std::to_string(bytes_.size()) + " bytes)");
+    }
+    T value;
+    std::memcpy(&value, bytes_.data() + at_, sizeof(T));
+    at_ += sizeof(T);
+    return value;
+  }
+  [[nodiscard]] bool done() const noexcept { return at_ == bytes_.size(); }
+
+private:
+  const std::vector<std::byte>& bytes_;
+  std::size_t at_ = 0;
+};
+
+/// The world's structure: which bodies, shapes and joints exist (ids with generations), what
+/// type each body is and which body each shape is on.
+std::uint64_t structureHash(const WorldState& w) {
+  StateHash hash;
+  hash.add(static_cast<std::uint32_t>(w.bodies.size()));
+  for (const Body& b : w.bodies) {
+    hash.add(b.alive);
+    if (b.alive) {
+      hash.add(b.id.generation);
+      hash.add(static_cast<std::uint32_t>(b.type));
+    }
+  }
+  hash.add(static_cast<std::uint32_t>(w.shapes.size()));
+  for (const Shape& s : w.shapes) {
+    hash.add(s.alive);
+    if (s.alive) {
+      hash.add(s.id.generation);
+      hash.add(s.body);
+      hash.add(s.inStaticTree);
+    }
+  }
+  hash.add(static_cast<std::uint32_t>(w.joints.size()));
+  for (const Joint& j : w.joints) {
+    hash.add(j.alive);
+    if (j.alive) {
+      hash.add(j.id.generation);
+    }
+  }
+  return hash.value();
+}
+
+/// Writes the count and then each value of a list of slots.
+void putList(Writer& out, const std::vector<std::uint32_t>& list) {
+  out.put(static_cast<std::uint32_t>(list.size()));
+  for (std::uint32_t v : list) {
+    out.put(v);
+  }
+}
+
+void getList(Reader& in, std::vector<std::uint32_t>& list, std::size_t bound) {
+  const auto n = in.get<std::uint32_t>();
+  list.clear();
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const auto v = in.get<std::uint32_t>();
+    if (v >= bound) {
+      throw Error("snapshot", "snapshot: a slot out of range (" + std::to_string(v) + ")");
+    }
+    list.push_back(v);
+  }
+}
+
+} // namespace
+
+void World::saveState(WorldSnapshot& out) const {
+  const WorldState& w = *impl_;
+  Writer put(out.bytes_);
+  put.put(snapshotMagic);
+  put.put(snapshotVersion);
+  put.put(structureHash(w));
+  put.put(w.lastInverseH);
+  for (const Body& b : w.bodies) {
+    if (b.alive) {
+      put.put(b.transform);
+      put.put(b.center);
+      put.put(b.linearVelocity);
+      put.put(b.angularVelocity);
+      put.put(b.force);
+      put.put(b.torque);
+      put.put(b.awake);
+      put.put(b.sleepTime);
+    }
+  }
+  for (const Shape& s : w.shapes) {
+    if (s.alive) {
+      put.put(s.fatBox);
+    }
+  }
+  putList(put, w.moveBuffer);
+  put.put(static_cast<std::uint32_t>(w.contacts.size()));
+  for (const Contact& c : w.contacts) {
+    put.put(c.alive);
+    if (c.alive) {
+      put.put(c);
+    }
+  }
+  putList(put, w.freeContacts);
+  for (const Joint& j : w.joints) {
+    if (j.alive) {
+      put.put(j);
+    }
+  }
+}
+
+void World::restoreState(const WorldSnapshot& snapshot) {
+  WorldState& w = *impl_;
+  if (snapshot.empty()) {
+    throw Error("snapshot", "snapshot: empty (nothing was saved into it)");
+  }
+  Reader in(snapshot.bytes_);
+  if (in.get<std::uint32_t>() != snapshotMagic || in.get<std::uint32_t>() != snapshotVersion) {
+    throw Error("snapshot", "snapshot: not a snapshot of this version of Impetus");
+  }
+  if (in.get<std::uint64_t>() != structureHash(w)) {
+    throw Error("snapshot", "snapshot: saved from a world with other bodies, shapes or joints (created, destroyed "
+                            "or changed type since)");
+  }
+  // Everything is read into place only after the checks above: a structural mismatch leaves the
+  // world untouched. (A truncated snapshot of a matching world cannot be written by saveState.)
+  w.lastInverseH = in.get<float>();
+  for (Body& b : w.bodies) {
+    if (b.alive) {
+      b.transform = in.get<Transform2f>();
+      b.center = in.get<Vec2f>();
+      b.linearVelocity = in.get<Vec2f>();
+      b.angularVelocity = in.get<float>();
+      b.force = in.get<Vec2f>();
+      b.torque = in.get<float>();
+      b.awake = in.get<bool>();
+      b.sleepTime = in.get<float>();
+    }
+  }
+  for (Shape& s : w.shapes) {
+    if (s.alive) {
+      const AABB fatBox = in.get<AABB>();
+      if (std::memcmp(&fatBox, &s.fatBox, sizeof(AABB)) != 0) {
+        s.fatBox = fatBox;
+        w.treeOf(s).moveProxy(s.proxy, fatBox);
+      }
+    }
+  }
+  getList(in, w.moveBuffer, w.shapes.size());
+  const auto contactSlots = in.get<std::uint32_t>();
+  w.contacts.assign(contactSlots, Contact{});
+  w.contactByPair.clear();
+  for (std::uint32_t slot = 0; slot < contactSlots; ++slot) {
+    if (in.get<bool>()) {
+      const Contact c = in.get<Contact>();
+      w.contacts[slot] = c;
+      w.contactByPair.insert(detail::pairKey(c.shapeA, c.shapeB), slot);
+    }
+  }
+  getList(in, w.freeContacts, contactSlots);
+  for (Joint& j : w.joints) {
+    if (j.alive) {
+      j = in.get<Joint>();
+    }
+  }
+  if (!in.done()) {
+    throw Error("snapshot", "snapshot: trailing bytes after the joints");
+  }
+  // This step's events belong to the timeline that was left (cleared, keeping their capacity).
+  for (ContactEvents* events : {&w.contactEvents, &w.pendingEvents}) {
+    events->begins.clear();
+    events->ends.clear();
+    events->hits.clear();
+  }
+  for (SensorEvents* events : {&w.sensorEvents, &w.pendingSensorEvents}) {
+    events->begins.clear();
+    events->ends.clear();
+  }
+  w.jointEvents.breaks.clear();
+}
+
+} // namespace impetus::rigid2d
