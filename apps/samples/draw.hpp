@@ -94,4 +94,28 @@ public:
   void grid(const Vec2f& lower, const Vec2f& upper, float spacing, const Color& color);
 };
 
+/// A DebugDraw that forwards to another with every point moved by `offset` (m): to draw two worlds
+/// side by side in one view.
+class OffsetDraw final : public DebugDraw {
+public:
+  OffsetDraw(DebugDraw& target, const Vec2f& offset) : target_(target), offset_(offset) {}
+  void segment(const Vec2f& a, const Vec2f& b, const Color& color) override {
+    target_.segment(a + offset_, b + offset_, color);
+  }
+  void triangle(const Vec2f& a, const Vec2f& b, const Vec2f& c, const Color& color) override {
+    target_.triangle(a + offset_, b + offset_, c + offset_, color);
+  }
+  void point(const Vec2f& p, float sizePixels, const Color& color) override {
+    target_.point(p + offset_, sizePixels, color);
+  }
+  void text(const Vec2f& p, std::string_view label, const Color& color) override {
+    target_.text(p + offset_, label, color);
+  }
+  [[nodiscard]] float pixelSize() const override { return target_.pixelSize(); }
+
+private:
+  DebugDraw& target_;
+  Vec2f offset_;
+};
+
 } // namespace impetus::samples

@@ -2,8 +2,11 @@
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <functional>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace impetus::testing {
@@ -29,6 +32,25 @@ std::size_t distinctColours(const Image& image) {
                    image.rgb[i + 2]);
   }
   return colours.size();
+}
+
+double fractionBeyondCommonest(const Image& image, std::size_t common) {
+  std::unordered_map<std::uint32_t, std::size_t> counts;
+  for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
+    ++counts[static_cast<std::uint32_t>(image.rgb[i]) << 16 | static_cast<std::uint32_t>(image.rgb[i + 1]) << 8 |
+             image.rgb[i + 2]];
+  }
+  std::vector<std::size_t> sorted;
+  for (const auto& [colour, n] : counts) {
+    sorted.push_back(n);
+  }
+  std::sort(sorted.begin(), sorted.end(), std::greater<>());
+  std::size_t beyond = 0;
+  for (std::size_t i = common; i < sorted.size(); ++i) {
+    beyond += sorted[i];
+  }
+  const std::size_t pixels = image.rgb.size() / 3;
+  return pixels == 0 ? 0.0 : static_cast<double>(beyond) / static_cast<double>(pixels);
 }
 
 double differingFraction(const Image& image, const Image& reference, int tolerance) {

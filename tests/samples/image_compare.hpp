@@ -20,6 +20,10 @@ struct Image {
 /// Number of distinct RGB colours.
 [[nodiscard]] std::size_t distinctColours(const Image& image);
 
+/// Fraction of pixels (0 to 1) whose colour is not one of the `common` most frequent colours: what
+/// is drawn beyond the background and the grid lines.
+[[nodiscard]] double fractionBeyondCommonest(const Image& image, std::size_t common);
+
 /// Fraction of pixels (0 to 1) that differ from the reference by more than `tolerance` (0-255)
 /// in any channel; 1 when the sizes differ.
 [[nodiscard]] double differingFraction(const Image& image, const Image& reference, int tolerance);

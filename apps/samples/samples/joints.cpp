@@ -183,7 +183,7 @@ protected:
     angle_.plot("revolute joint angle (rad)", "%.2f rad", 50.0f, -3.2f, 3.2f);
     travel_.plot("prismatic travel (m)", "%.2f m", 50.0f, -2.2f, 3.2f);
     length_.plot("spring length (m)", "%.3f m", 50.0f);
-    ImGui::Text("undamped spring period 1/f = %.2f s", 1.0 / static_cast<double>(springHertz_));
+    ImGui::TextWrapped("undamped spring period 1/f = %.2f s", 1.0 / static_cast<double>(springHertz_));
   }
 
 private:

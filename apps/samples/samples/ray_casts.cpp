@@ -97,8 +97,8 @@ protected:
     ImGui::SliderFloat("##range", &range_, 1.0f, 60.0f, "range %.0f m");
     ImGui::SliderInt("##bounces", &bounces_, 0, 8, "bounces: %d");
     ImGui::Checkbox("all hits along the first ray (castRayAll)", &allHits_);
-    ImGui::Text("origin (%.1f, %.1f) m, angle %.0f deg", static_cast<double>(origin_.x), static_cast<double>(origin_.y),
-                static_cast<double>(angle_ * 57.29578f));
+    ImGui::TextWrapped("origin (%.1f, %.1f) m, angle %.0f deg", static_cast<double>(origin_.x),
+                       static_cast<double>(origin_.y), static_cast<double>(angle_ * 57.29578f));
     distance_.plot("distance to the closest hit (m)", "%.2f m", 80.0f, 0.0f, range_);
   }
 
