@@ -40,7 +40,8 @@ struct BodiesW {
   FloatW vx, vy, w, dpx, dpy, dqc, dqs;
 };
 
-BodiesW gather(const BodyState* states, const std::array<std::uint32_t, simdWidth>& index) {
+[[gnu::always_inline]] inline BodiesW gather(const BodyState* states,
+                                             const std::array<std::uint32_t, simdWidth>& index) {
   const float* rows[simdWidth];
   for (std::size_t i = 0; i < simdWidth; ++i) {
     rows[i] = &states[index[i]].v.x;
@@ -51,7 +52,8 @@ BodiesW gather(const BodyState* states, const std::array<std::uint32_t, simdWidt
 }
 
 /// Velocities only (warm start and restitution need no position deltas).
-BodiesW gatherVelocities(const BodyState* states, const std::array<std::uint32_t, simdWidth>& index) {
+[[gnu::always_inline]] inline BodiesW gatherVelocities(const BodyState* states,
+                                                       const std::array<std::uint32_t, simdWidth>& index) {
   const float* rows[simdWidth];
   for (std::size_t i = 0; i < simdWidth; ++i) {
     rows[i] = &states[index[i]].v.x;
@@ -64,8 +66,8 @@ BodiesW gatherVelocities(const BodyState* states, const std::array<std::uint32_t
 
 /// Writes the velocities back; static lanes write to the sink state after the static one
 /// (never read), which keeps the stores free of branches.
-void scatter(BodyState* states, const std::array<std::uint32_t, simdWidth>& index, std::uint32_t staticIndex,
-             const BodiesW& b) {
+[[gnu::always_inline]] inline void scatter(BodyState* states, const std::array<std::uint32_t, simdWidth>& index,
+                                           std::uint32_t staticIndex, const BodiesW& b) {
   float* rows[simdWidth];
   for (std::size_t i = 0; i < simdWidth; ++i) {
     rows[i] = &states[index[i] == staticIndex ? staticIndex + 1 : index[i]].v.x;
@@ -135,8 +137,8 @@ void applyW(BodiesW& a, BodiesW& b, const ContactConstraintWide& c, const Contac
   b.w = b.w + c.invIB * (p.rBx * py - p.rBy * px);
 }
 
-void solveWide(ContactConstraintWide& c, BodyState* states, std::uint32_t staticIndex,
-               const ContactSolveParams& params) {
+[[gnu::always_inline]] inline void solveWide(ContactConstraintWide& c, BodyState* states, std::uint32_t staticIndex,
+                                             const ContactSolveParams& params) {
   BodiesW a = gather(states, c.indexA);
   BodiesW b = gather(states, c.indexB);
   const FloatW zero = zeroW();
@@ -197,7 +199,8 @@ void solveWide(ContactConstraintWide& c, BodyState* states, std::uint32_t static
   scatter(states, c.indexB, staticIndex, b);
 }
 
-void warmStartWide(ContactConstraintWide& c, BodyState* states, std::uint32_t staticIndex) {
+[[gnu::always_inline]] inline void warmStartWide(ContactConstraintWide& c, BodyState* states,
+                                                 std::uint32_t staticIndex) {
   BodiesW a = gatherVelocities(states, c.indexA);
   BodiesW b = gatherVelocities(states, c.indexB);
   const FloatW tx = c.normalY;
