@@ -64,6 +64,23 @@ void buildSolverBodies(WorldState& w) {
   });
 }
 
+namespace {
+
+/// Holds a dynamic body's velocity within the world's speed limits: maxLinearSpeed and the
+/// largest turn per substep. Applied where velocities are integrated and again before positions
+/// are: the constraints may have pushed a body past them in between (a fast-spinning lever on a
+/// joint, say), and a position step at an unbounded speed is how a world blows up.
+void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
+  // Each component first, so that an overflowed (infinite) velocity still has a direction.
+  s.v = {std::clamp(s.v.x, -maxSpeed, maxSpeed), std::clamp(s.v.y, -maxSpeed, maxSpeed)};
+  if (lengthSquared(s.v) > maxSpeed * maxSpeed) {
+    s.v = normalize(s.v) * maxSpeed;
+  }
+  s.w = std::clamp(s.w, -maxAngularSpeed, maxAngularSpeed);
+}
+
+} // namespace
+
 void integrateVelocities(WorldState& w, const StepContext& context) {
   const float h = context.h;
   const float maxSpeed = w.def.maxLinearSpeed;
@@ -76,22 +93,23 @@ void integrateVelocities(WorldState& w, const StepContext& context) {
       }
       BodyState& s = w.states[i];
       // Implicit damping: stable for any coefficient.
-      Vec2f v = (s.v + sim.acceleration * h) * (1.0f / (1.0f + h * sim.linearDamping));
-      float av = (s.w + sim.angularAcceleration * h) * (1.0f / (1.0f + h * sim.angularDamping));
-      if (lengthSquared(v) > maxSpeed * maxSpeed) {
-        v = normalize(v) * maxSpeed;
-      }
-      s.v = v;
-      s.w = std::clamp(av, -maxAngularSpeed, maxAngularSpeed);
+      s.v = (s.v + sim.acceleration * h) * (1.0f / (1.0f + h * sim.linearDamping));
+      s.w = (s.w + sim.angularAcceleration * h) * (1.0f / (1.0f + h * sim.angularDamping));
+      clampVelocity(s, maxSpeed, maxAngularSpeed);
     }
   });
 }
 
 void integratePositions(WorldState& w, const StepContext& context) {
   const float h = context.h;
+  const float maxSpeed = w.def.maxLinearSpeed;
+  const float maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
   w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t i = begin; i < end; ++i) {
       BodyState& s = w.states[i];
+      if (w.sims[i].dynamic) {
+        clampVelocity(s, maxSpeed, maxAngularSpeed);
+      }
       s.dp += s.v * h;
       const float angle = s.w * h;
       s.dq = normalize(Rot2f{s.dq.c - angle * s.dq.s, s.dq.s + angle * s.dq.c});
