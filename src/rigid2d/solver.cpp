@@ -100,6 +100,18 @@ void integrateVelocities(WorldState& w, const StepContext& context) {
   });
 }
 
+void clampVelocities(WorldState& w, const StepContext& context) {
+  const float maxSpeed = w.def.maxLinearSpeed;
+  const float maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
+  w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t i = begin; i < end; ++i) {
+      if (w.sims[i].dynamic) {
+        clampVelocity(w.states[i], maxSpeed, maxAngularSpeed);
+      }
+    }
+  });
+}
+
 void integratePositions(WorldState& w, const StepContext& context) {
   const float h = context.h;
   const float maxSpeed = w.def.maxLinearSpeed;
@@ -140,6 +152,7 @@ void solve(WorldState& w, float dt) {
     solveContacts(w, context, false);
   }
   applyRestitution(w);
+  clampVelocities(w, context); // what the relax and restitution passes added, too
   storeImpulses(w);
   finishJoints(w, context);
 }

@@ -275,6 +275,8 @@ void buildSolverBodies(WorldState& w);
 /// damping, then position deltas from the new velocities.
 void integrateVelocities(WorldState& w, const StepContext& context);
 void integratePositions(WorldState& w, const StepContext& context);
+/// Holds every dynamic body within maxLinearSpeed and the largest turn per substep.
+void clampVelocities(WorldState& w, const StepContext& context);
 
 // book_impulse.cpp
 /// The book's collision response (ch. 9-10, errata fixed): one step of semi-implicit Euler and
