@@ -70,7 +70,7 @@ namespace {
 /// largest turn per substep. Applied where velocities are integrated and again before positions
 /// are: the constraints may have pushed a body past them in between (a fast-spinning lever on a
 /// joint, say), and a position step at an unbounded speed is how a world blows up.
-void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
+[[gnu::always_inline]] inline void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
   // Each component first, so that an overflowed (infinite) velocity still has a direction.
   s.v = {std::clamp(s.v.x, -maxSpeed, maxSpeed), std::clamp(s.v.y, -maxSpeed, maxSpeed)};
   if (lengthSquared(s.v) > maxSpeed * maxSpeed) {
