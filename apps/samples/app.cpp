@@ -493,6 +493,9 @@ int App::run() {
   if (options_.headless()) {
     std::printf("impetus-samples: %s: %d frames, %ld steps, %.3f s simulated, state finite\n", name().c_str(), frame,
                 steps_, simulatedTime_);
+    if (const std::string summary = sample_->summary(); !summary.empty()) {
+      std::printf("impetus-samples: %s: %s\n", name().c_str(), summary.c_str());
+    }
   }
   return 0;
 }

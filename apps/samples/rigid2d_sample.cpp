@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace impetus::samples {
@@ -57,6 +58,15 @@ bool Rigid2dSample::finite() const {
     }
   }
   return true;
+}
+
+std::string Rigid2dSample::summary() const {
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "%zu bodies (%zu awake), %zu joints, %zu touching contacts, kinetic energy %.3g J per metre of depth",
+                world_.bodyCount(), world_.awakeBodyCount(), world_.jointCount(), world_.contactCount(),
+                static_cast<double>(kineticEnergy()));
+  return text;
 }
 
 float Rigid2dSample::kineticEnergy() const {

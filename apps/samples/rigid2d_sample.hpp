@@ -12,6 +12,7 @@
 #include <impetus/rigid2d/world.hpp>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace impetus::samples {
@@ -22,6 +23,8 @@ public:
   void draw(DebugDraw& draw) override;
   void ui() override;
   [[nodiscard]] bool finite() const override;
+  /// Bodies (awake), joints, touching contacts and the kinetic energy.
+  [[nodiscard]] std::string summary() const override;
 
   bool mouseDown(const Vec2f& world, MouseButton button) override;
   void mouseMove(const Vec2f& world) override;

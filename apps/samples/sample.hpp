@@ -66,6 +66,8 @@ public:
   [[nodiscard]] virtual float timeStep() const { return 1.0f / 60.0f; }
   /// Where the camera starts.
   [[nodiscard]] virtual CameraView initialView() const { return {}; }
+  /// One sentence on the state now, printed at the end of a headless run (bodies, energy...).
+  [[nodiscard]] virtual std::string summary() const { return {}; }
   /// One line on the keys and mouse, shown in the panel ("" when only the common controls apply).
   [[nodiscard]] virtual std::string_view controls() const { return {}; }
 

@@ -132,6 +132,27 @@ TEST_P(SampleRuns, Runs120FramesFiniteAndItsScreenshotIsNotBlank) {
 INSTANTIATE_TEST_SUITE_P(Samples, SampleRuns, ::testing::ValuesIn(sampleNames()),
                          [](const ::testing::TestParamInfo<std::string>& p) { return testName(p.param); });
 
+// The integrators side by side on a spring: double-precision arithmetic of the integrate layer
+// and Dear ImGui's panel, no solver whose tuning may change. Software rasterisation is
+// deterministic on one machine; the tolerance absorbs a different CPU's code paths in llvmpipe.
+// After a deliberate change to the sample or the app, regenerate it:
+//   impetus-samples --sample Book/Integrators --frames 120 --width 320 --height 240
+//                   --screenshot tests/samples/reference/book_integrators_320x240.png
+TEST(SamplesReference, IntegratorsMatchTheCommittedPicture) {
+  const std::string png = screenshotPath("reference Book/Integrators");
+  const CliRun run = renderRun(
+      {"--sample", "Book/Integrators", "--frames", "120", "--screenshot", png, "--width", "320", "--height", "240"});
+  ASSERT_EQ(run.status, 0) << run.out << run.err;
+  const std::string referencePath =
+      std::string(IMPETUS_SOURCE_DIR) + "/tests/samples/reference/book_integrators_320x240.png";
+  const std::optional<Image> reference = readPng(referencePath);
+  ASSERT_TRUE(reference.has_value()) << referencePath;
+  const std::optional<Image> image = readPng(png);
+  ASSERT_TRUE(image.has_value()) << png;
+  // A pixel differs when a channel is off by more than 24 of 255; at most 1 % of them may.
+  EXPECT_LE(differingFraction(*image, *reference, 24), 0.01) << png << " differs from " << referencePath;
+}
+
 TEST(SamplesApp, ListsEverySampleOnceAsCategorySlashName) {
   const std::vector<std::string> names = sampleNames();
   ASSERT_FALSE(names.empty());
