@@ -34,7 +34,12 @@ void drawJoint(const World& world, DebugDraw& draw, const JointDrawInfo& info) {
     draw.point(pB, 6.0f, c);
     break;
   case JointType::motor:
-    draw.segment(xfA.p, xfB.p, c.withAlpha(0.5f));
+    // Drives B's origin toward an offset from A's: the line between them, unless A is static
+    // (whose origin is usually far away).
+    if (world.bodyType(a) != BodyType::staticBody) {
+      draw.segment(xfA.p, xfB.p, c.withAlpha(0.5f));
+    }
+    draw.point(xfB.p, 5.0f, c);
     break;
   default:
     // As Box2D draws them: body A's origin to its anchor, the anchors, B's anchor to its origin

@@ -135,7 +135,7 @@ public:
     travel_.clear();
     length_.clear();
   }
-  [[nodiscard]] CameraView initialView() const override { return {{-1.0f, 6.0f}, 7.0f, 23.0f}; }
+  [[nodiscard]] CameraView initialView() const override { return {{-1.0f, 6.0f}, 7.0f, 24.5f}; }
   [[nodiscard]] std::string_view controls() const override { return "Left-drag any body (the mouse joint)."; }
 
 protected:
@@ -164,7 +164,7 @@ protected:
     } labels[] = {{{-22.0f, 9.5f}, "revolute + motor"}, {{-14.5f, 11.0f}, "prismatic"},
                   {{-8.5f, 12.5f}, "distance: spring"}, {{-3.5f, 11.0f}, "rope"},
                   {{1.0f, 9.5f}, "weld (soft)"},        {{9.0f, 5.0f}, "wheel"},
-                  {{15.5f, 9.5f}, "motor joint"}};
+                  {{14.5f, 9.5f}, "motor joint"}};
     for (const auto& l : labels) {
       draw.text(l.at, l.name, palette::text);
     }
