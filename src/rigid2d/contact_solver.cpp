@@ -104,12 +104,12 @@ int findColour(ContactSolverData& d, std::uint32_t a, std::uint32_t b, std::uint
 /// effective masses, and the approach speed before the step.
 ContactConstraint makeConstraint(const WorldState& w, Contact& contact, std::uint32_t slot,
                                  const ContactSolverData& d) {
-  const Body& a = w.bodies[contact.bodyA];
-  const Body& b = w.bodies[contact.bodyB];
+  const SolverBodyInfo& a = w.bodyInfo[contact.bodyA];
+  const SolverBodyInfo& b = w.bodyInfo[contact.bodyB];
   const Manifold& m = contact.manifold;
   ContactConstraint c;
-  c.indexA = a.moving() ? a.solverIndex : w.staticIndex();
-  c.indexB = b.moving() ? b.solverIndex : w.staticIndex();
+  c.indexA = a.solverIndex;
+  c.indexB = b.solverIndex;
   c.contact = slot;
   c.mA = a.inverseMass;
   c.iA = a.inverseInertia;
@@ -125,8 +125,8 @@ ContactConstraint makeConstraint(const WorldState& w, Contact& contact, std::uin
   c.softness = (c.mA == 0.0f || c.mB == 0.0f) ? d.staticSoft : d.soft;
   c.pointCount = m.pointCount;
   const Vec2f tangent{m.normal.y, -m.normal.x};
-  const Vec2f offsetA = a.center - a.transform.p;
-  const Vec2f offsetB = b.center - b.transform.p;
+  const Vec2f offsetA = a.centerOffset;
+  const Vec2f offsetB = b.centerOffset;
   const BodyState& stA = w.states[c.indexA];
   const BodyState& stB = w.states[c.indexB];
   for (int k = 0; k < m.pointCount; ++k) {
@@ -335,14 +335,12 @@ void prepareContacts(WorldState& w, const StepContext& context) {
     if (!contact.alive || contact.sensor || contact.manifold.pointCount == 0) {
       continue;
     }
-    const Body& a = w.bodies[contact.bodyA];
-    const Body& b = w.bodies[contact.bodyB];
-    if (!a.moving() && !b.moving()) {
+    const std::uint32_t ia = w.bodyInfo[contact.bodyA].solverIndex;
+    const std::uint32_t ib = w.bodyInfo[contact.bodyB].solverIndex;
+    if (ia == staticIndex && ib == staticIndex) {
       continue; // asleep (the world wakes a sleeper touched by a moving body before the solve)
     }
     contact.approachSpeed = 0.0f;
-    const std::uint32_t ia = a.moving() ? a.solverIndex : staticIndex;
-    const std::uint32_t ib = b.moving() ? b.solverIndex : staticIndex;
     const bool withStatic = ia == staticIndex || ib == staticIndex;
     const int colour = findColour(d, ia, ib, staticIndex, withStatic ? allColours : dynamicColours);
     if (colour < 0) {

@@ -44,6 +44,11 @@ void buildSolverBodies(WorldState& w) {
     }
   }
   const auto n = static_cast<std::uint32_t>(w.awakeBodies.size());
+  w.bodyInfo.resize(w.bodies.size());
+  for (std::uint32_t slot = 0; slot < w.bodies.size(); ++slot) {
+    const Body& b = w.bodies[slot];
+    w.bodyInfo[slot] = {b.moving() ? b.solverIndex : n, b.inverseMass, b.inverseInertia, b.center - b.transform.p};
+  }
   w.states.resize(n + 2);
   w.sims.resize(n);
   w.states[n] = BodyState{}; // the static state: at rest, never written

@@ -134,6 +134,15 @@ struct BodySim {
   bool dynamic = false;          ///< kinematic bodies keep their velocity
 };
 
+/// What the contact solver reads of a body each step, packed: the Body itself is large and cold,
+/// and preparing thousands of contacts would otherwise pull two of them into the cache apiece.
+struct SolverBodyInfo {
+  std::uint32_t solverIndex = 0; ///< into `states`; WorldState::staticIndex() for a body not moving
+  float inverseMass = 0.0f;      ///< 1/kg
+  float inverseInertia = 0.0f;   ///< 1/(kg m^2)
+  Vec2f centerOffset;            ///< centre of mass minus origin, world axes, m
+};
+
 struct ContactSolverData; // contact_solver.cpp
 struct Joint;             // joints.hpp
 
@@ -190,6 +199,7 @@ struct WorldState {
   std::vector<std::uint32_t> awakeBodies;
   std::vector<BodyState> states;
   std::vector<BodySim> sims;
+  std::vector<SolverBodyInfo> bodyInfo; ///< by body slot, rebuilt each step with `states`
   std::unique_ptr<ContactSolverData> contactSolver;
   std::vector<BulletStart> bullets;        ///< scratch of the finalize pass
   std::vector<std::uint32_t> islandParent; ///< scratch of the sleep pass (union-find by body slot)
