@@ -62,7 +62,8 @@ void solveBookImpulse(WorldState& w, float dt) {
   warmStartJoints(w);
   solveJoints(w, context, true);
   const std::uint32_t staticIndex = w.staticIndex();
-  for (Contact& contact : w.contacts) {
+  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+    Contact& contact = w.contacts[slot];
     contact.approachSpeed = 0.0f;
     if (!contact.alive || contact.sensor || contact.manifold.pointCount == 0) {
       continue;
@@ -100,6 +101,7 @@ void solveBookImpulse(WorldState& w, float dt) {
     }
     contact.approachSpeed = -approach;
     contact.fastestPoint = 0;
+    w.maybeHit[slot] = 1;
   }
   integratePositions(w, context);
   solveJoints(w, context, false);

@@ -597,12 +597,17 @@ void World::step(float dt) {
   updatePairs(w);
   collideContacts(w);
   detail::wakeTouched(w);
+  w.maybeHit.assign(w.contacts.size(), 0);
   if (w.def.solver == SolverKind::bookImpulse) {
     detail::solveBookImpulse(w, dt);
   } else {
     detail::solve(w, dt);
   }
-  for (const Contact& contact : w.contacts) {
+  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+    if (w.maybeHit[slot] == 0) {
+      continue;
+    }
+    const Contact& contact = w.contacts[slot];
     // A resting contact approaches at a few um/s of round-off: a hit needs a real approach.
     constexpr float restingSpeed = 1e-3f; // m/s
     if (contact.alive && !contact.sensor && contact.manifold.pointCount > 0 && contact.approachSpeed > restingSpeed &&

@@ -192,6 +192,9 @@ struct WorldState {
   JointEvents jointEvents;
   float lastInverseH = 0.0f;              ///< the last step's substep rate, 1/s (impulses to forces)
   std::vector<std::uint8_t> touchChanges; ///< scratch of the collide pass: 1 began, 2 ended touching
+  /// Scratch of the solve, per contact slot: 1 where the contact approached this step (a hit
+  /// event may be due), so the events need not read every contact again.
+  std::vector<std::uint8_t> maybeHit;
 
   /// This step's moving bodies in solver order, their solver state (plus, at staticIndex(), a
   /// never written state standing for every static body, and after it a never read one that
