@@ -26,10 +26,15 @@ bool ParticleDrag::grab(ParticleWorld& world, const Vec2f& point, float reach, s
   return true;
 }
 
-void ParticleDrag::apply(ParticleWorld& world) const {
+void ParticleDrag::apply(ParticleWorld& world, float maxMove) const {
   if (grabbed_ && world.isValid(grabbed_->particle)) {
     const Vec3f p = world.position(grabbed_->particle);
-    world.setPosition(grabbed_->particle, {target_.x, target_.y, p.z});
+    Vec2f move = target_ - Vec2f{p.x, p.y};
+    const float distance = length(move);
+    if (distance > maxMove) {
+      move *= maxMove / distance;
+    }
+    world.setPosition(grabbed_->particle, {p.x + move.x, p.y + move.y, p.z});
     world.setVelocity(grabbed_->particle, {});
   }
 }

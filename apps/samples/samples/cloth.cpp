@@ -74,6 +74,9 @@ public:
   [[nodiscard]] std::string_view controls() const override { return "Left-drag the cloth."; }
 
   bool mouseDown(const Vec2f& p, MouseButton /*button*/) override {
+    if (drag_.active()) {
+      return true; // one particle at a time
+    }
     std::vector<ParticleId> pinned;
     for (int r = 0; r < rows_; ++r) {
       pinned.push_back(cloth_.at(r, 0));

@@ -79,6 +79,9 @@ public:
   [[nodiscard]] std::string_view controls() const override { return "Left-drag a particle of either rope."; }
 
   bool mouseDown(const Vec2f& p, MouseButton /*button*/) override {
+    if (drag_.active()) {
+      return true; // one particle at a time
+    }
     for (std::size_t i = 0; i < 2; ++i) {
       const std::array<ParticleId, 1> pinned{ropes_[i].particles.front()};
       if (drag_.grab(*worlds_[i], p, 0.6f, pinned)) {
