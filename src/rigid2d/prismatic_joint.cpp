@@ -16,6 +16,20 @@
 
 namespace impetus::rigid2d::detail {
 
+namespace {
+
+float inverseOrZero(float k) { return k > 0.0f ? 1.0f / k : 0.0f; }
+
+} // namespace
+
+float sliderAxialMassNow(const SliderGeometry& g, const JointFrame& f) {
+  return inverseOrZero(f.mA + f.mB + f.iA * g.a1 * g.a1 + f.iB * g.a2 * g.a2);
+}
+
+float sliderNormalMassNow(const SliderGeometry& g, const JointFrame& f) {
+  return inverseOrZero(f.mA + f.mB + f.iA * g.s1 * g.s1 + f.iB * g.s2 * g.s2);
+}
+
 SliderGeometry sliderGeometry(const Vec2f& axisAtStart, const JointFrame& f, const BodyState& a, const BodyState& b) {
   SliderGeometry g;
   g.rA = currentAnchor(a, f.frameA);
@@ -89,6 +103,7 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
   joint.solvedAxis = g.axis;
   const float translation = dot(g.axis, g.d);
   const bool canSlide = joint.axialMass > 0.0f;
+  const float axialMass = sliderAxialMassNow(g, frame);
 
   if (def.enableSpring && canSlide) {
     // A real spring (force -k x - c xdot with k = axialMass omega^2): applied in the relax pass too.
@@ -101,15 +116,14 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
   if (def.enableMotor && canSlide) {
     const float maxImpulse = context.h * def.maxMotorForce;
     const float old = joint.motorImpulse;
-    joint.motorImpulse =
-        std::clamp(old - joint.axialMass * (axialSpeed(g, a, b) - def.motorSpeed), -maxImpulse, maxImpulse);
+    joint.motorImpulse = std::clamp(old - axialMass * (axialSpeed(g, a, b) - def.motorSpeed), -maxImpulse, maxImpulse);
     applyAxial(g, frame, a, b, joint.motorImpulse - old);
   }
   if (def.enableLimit && canSlide) {
-    solveTranslationLimit(joint.lowerImpulse, translation - def.lowerTranslation, 1.0f, g, frame, a, b, joint.axialMass,
+    solveTranslationLimit(joint.lowerImpulse, translation - def.lowerTranslation, 1.0f, g, frame, a, b, axialMass,
                           context, useBias);
-    solveTranslationLimit(joint.upperImpulse, def.upperTranslation - translation, -1.0f, g, frame, a, b,
-                          joint.axialMass, context, useBias);
+    solveTranslationLimit(joint.upperImpulse, def.upperTranslation - translation, -1.0f, g, frame, a, b, axialMass,
+                          context, useBias);
   }
 
   // The line and angle block, last: it matters most.

@@ -46,6 +46,14 @@ struct SliderGeometry {
 void applyAxial(const SliderGeometry& g, const JointFrame& f, BodyState& a, BodyState& b, float impulse);
 /// The effective mass along the axis at the step's start, kg (0 when neither body can move).
 [[nodiscard]] float sliderAxialMass(const Vec2f& axis, const JointFrame& f);
+/// The effective masses along the axis and across it in the current geometry, kg. The rigid rows
+/// (limits, motors, the line) use these, not the step's-start values: a light body with little
+/// inertia on a long arm turns far within a step, its effective mass along a row changes by
+/// orders of magnitude, and an impulse from the stale mass overshoots, over and over (the soak
+/// test found worlds gaining energy without end that way). Springs keep the step's-start mass,
+/// which defines their stiffness.
+[[nodiscard]] float sliderAxialMassNow(const SliderGeometry& g, const JointFrame& f);
+[[nodiscard]] float sliderNormalMassNow(const SliderGeometry& g, const JointFrame& f);
 /// A one-sided translation limit (lower: direction +1, c = translation - lower; upper: -1,
 /// c = upper - translation) keeping c >= 0 with an accumulated impulse >= 0: speculative while
 /// inside (may close the gap this substep, no more), soft at the joint stiffness when violated.

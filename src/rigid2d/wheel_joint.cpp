@@ -18,11 +18,6 @@ void prepareJoint(WheelJoint& joint, const JointFrame& frame, const StepContext&
   joint.axisA = rotate(frame.qA, joint.def.localAxisA);
   joint.solvedAxis = joint.axisA;
   joint.axialMass = sliderAxialMass(joint.axisA, frame);
-  const Vec2f normal = perp(joint.axisA);
-  const float s1 = cross(frame.deltaCenter + frame.frameB, normal);
-  const float s2 = cross(frame.frameB, normal);
-  const float kp = frame.mA + frame.mB + frame.iA * s1 * s1 + frame.iB * s2 * s2;
-  joint.perpMass = kp > 0.0f ? 1.0f / kp : 0.0f;
   const float km = frame.iA + frame.iB;
   joint.motorMass = km > 0.0f ? 1.0f / km : 0.0f;
   joint.springSoftness = makeSoft(joint.def.hertz, joint.def.dampingRatio, context.h);
@@ -53,6 +48,7 @@ void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyStat
   joint.solvedAxis = g.axis;
   const float translation = dot(g.axis, g.d);
   const bool canSlide = joint.axialMass > 0.0f;
+  const float axialMass = sliderAxialMassNow(g, frame);
 
   if (def.enableMotor && joint.motorMass > 0.0f) {
     const float maxImpulse = context.h * def.maxMotorTorque;
@@ -71,10 +67,10 @@ void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyStat
     applyAxial(g, frame, a, b, impulse);
   }
   if (def.enableLimit && canSlide) {
-    solveTranslationLimit(joint.lowerImpulse, translation - def.lowerTranslation, 1.0f, g, frame, a, b, joint.axialMass,
+    solveTranslationLimit(joint.lowerImpulse, translation - def.lowerTranslation, 1.0f, g, frame, a, b, axialMass,
                           context, useBias);
-    solveTranslationLimit(joint.upperImpulse, def.upperTranslation - translation, -1.0f, g, frame, a, b,
-                          joint.axialMass, context, useBias);
+    solveTranslationLimit(joint.upperImpulse, def.upperTranslation - translation, -1.0f, g, frame, a, b, axialMass,
+                          context, useBias);
   }
 
   // The hub on the line, last: it matters most.
@@ -87,7 +83,7 @@ void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyStat
     impulseScale = context.jointSoftness.impulseScale;
   }
   const float cdot = dot(g.normal, b.v - a.v) + g.s2 * b.w - g.s1 * a.w;
-  const float impulse = -massScale * joint.perpMass * (cdot + bias) - impulseScale * joint.perpImpulse;
+  const float impulse = -massScale * sliderNormalMassNow(g, frame) * (cdot + bias) - impulseScale * joint.perpImpulse;
   joint.perpImpulse += impulse;
   const Vec2f p = g.normal * impulse;
   a.v -= p * frame.mA;

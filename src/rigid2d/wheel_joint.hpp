@@ -17,7 +17,6 @@ struct WheelJoint {
   float upperImpulse = 0.0f;
   // This step's constants.
   Vec2f axisA;            ///< the axis in world axes at the step's start
-  float perpMass = 0.0f;  ///< across the axis, kg
   float axialMass = 0.0f; ///< along the axis, kg: the mass the suspension spring carries
   float motorMass = 0.0f; ///< 1 / (iA + iB), kg m^2
   Softness springSoftness;
