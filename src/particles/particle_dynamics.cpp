@@ -3,6 +3,9 @@
 
 #include <impetus/math/scalar.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace impetus::detail {
 namespace {
 
@@ -22,20 +25,22 @@ void axpy(std::span<const Vec3f> x, std::span<const Vec3f> a, float h, std::vect
 } // namespace
 
 void computeAccelerations(const ParticleWorldState& w, std::span<const Vec3f> x, std::span<const Vec3f> v,
-                          std::span<Vec3f> a) {
+                          std::span<Vec3f> a, float h) {
   const ParticleWorldSettings& s = w.settings;
   const ParticleStore& p = w.particles;
   const bool drag = s.linearDrag > 0.0f || s.dragCoefficient > 0.0f;
   // Quadratic drag 1/2 rho Cd (pi r^2) |v_rel| v_rel: the part that does not depend on r.
   const float quadratic = 0.5f * s.airDensity * s.dragCoefficient * pi<float>;
+  const float strongestDrag = 1.0f / h; // 1/s: stops the relative motion in one step, no more
   for (std::size_t i = 0; i < x.size(); ++i) {
-    Vec3f force = p.userForce[i];
+    a[i] = s.gravity + p.userForce[i] / p.mass[i];
     if (drag) {
       const Vec3f relative = v[i] - windAt(w, x[i]);
       const float r = p.radius[i];
-      force -= relative * (s.linearDrag + quadratic * r * r * length(relative));
+      // Drag per unit relative velocity, 1/s.
+      const float rate = (s.linearDrag + quadratic * r * r * length(relative)) / p.mass[i];
+      a[i] -= relative * std::min(rate, strongestDrag);
     }
-    a[i] = s.gravity + force / p.mass[i];
   }
   for (const Attractor& at : w.attractors) {
     const float eps2 = at.softening * at.softening;
@@ -75,7 +80,7 @@ void integrate(ParticleWorldState& w, float h) {
   const std::size_t n = p.size();
   std::vector<Vec3f>& a = s.acceleration;
   a.resize(n);
-  computeAccelerations(w, p.position, p.velocity, a);
+  computeAccelerations(w, p.position, p.velocity, a, h);
   switch (w.settings.integrator) {
   case ParticleIntegrator::semiImplicitEuler:
     for (std::size_t i = 0; i < n; ++i) {
@@ -99,7 +104,7 @@ void integrate(ParticleWorldState& w, float h) {
     }
     axpy(s.v0, a, h, s.k1v);
     s.k2v.resize(n);
-    computeAccelerations(w, p.position, s.k1v, s.k2v);
+    computeAccelerations(w, p.position, s.k1v, s.k2v, h);
     for (std::size_t i = 0; i < n; ++i) {
       p.velocity[i] = s.v0[i] + (a[i] + s.k2v[i]) * (0.5f * h);
     }
@@ -115,14 +120,14 @@ void integrate(ParticleWorldState& w, float h) {
     // k1 = (v0, a0)
     axpy(s.x0, s.v0, 0.5f * h, s.k1x); // x at the midpoint with k1
     axpy(s.v0, a, 0.5f * h, s.k1v);
-    computeAccelerations(w, s.k1x, s.k1v, s.k2v); // k2 = (k1v, k2v)
+    computeAccelerations(w, s.k1x, s.k1v, s.k2v, 0.5f * h); // k2 = (k1v, k2v)
     axpy(s.x0, s.k1v, 0.5f * h, s.k2x);
-    axpy(s.v0, s.k2v, 0.5f * h, s.k3x);           // reuse k3x as the stage-3 velocity
-    computeAccelerations(w, s.k2x, s.k3x, s.k3v); // k3 = (k3x, k3v)
+    axpy(s.v0, s.k2v, 0.5f * h, s.k3x);                     // reuse k3x as the stage-3 velocity
+    computeAccelerations(w, s.k2x, s.k3x, s.k3v, 0.5f * h); // k3 = (k3x, k3v)
     axpy(s.x0, s.k3x, h, s.k4x);
     axpy(s.v0, s.k3v, h, s.x0); // stage-4 velocity (x0 is copied back below first)
     std::vector<Vec3f>& v4 = s.x0;
-    computeAccelerations(w, s.k4x, v4, s.k4v); // k4 = (v4, k4v)
+    computeAccelerations(w, s.k4x, v4, s.k4v, h); // k4 = (v4, k4v)
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3f x0 = p.position[i];
       const Vec3f v0 = p.velocity[i];
@@ -152,7 +157,9 @@ void solveConstraints(ParticleWorldState& w, float h) {
       // XPBD: dlambda = (-C - alpha~ lambda) / (wa + wb + alpha~), alpha~ = alpha / h^2.
       const float alpha = c.compliance * inverseH2;
       const float denominator = wa + wb + alpha;
-      if (denominator == 0.0f) {
+      // Rigid between pinned particles (0), or so compliant that alpha overflowed (infinity:
+      // no force, where the update would compute infinity * 0 = NaN).
+      if (denominator == 0.0f || !std::isfinite(alpha)) {
         continue;
       }
       const Vec3f d = p.position[ia] - (anchored ? c.anchor : p.position[ib]);

@@ -102,8 +102,10 @@ struct ParticleWorldState {
 
 // particle_dynamics.cpp
 /// a = F/m for every particle at state (x, v): gravity, drag, attractors, springs, user forces.
+/// Drag is limited to what stops a particle relative to the air within the (stage) step `h`:
+/// an explicit step of a stronger drag would reverse the velocity and grow it step after step.
 void computeAccelerations(const ParticleWorldState& w, std::span<const Vec3f> x, std::span<const Vec3f> v,
-                          std::span<Vec3f> a);
+                          std::span<Vec3f> a, float h);
 /// Advances velocities and positions by h with the world's integrator.
 void integrate(ParticleWorldState& w, float h);
 /// One XPBD pass over the distance constraints, then v += (x_after - x_before) / h.

@@ -575,3 +575,39 @@ TEST(ParticleWorld, bad_input_throws_naming_the_field) {
 
 } // namespace
 } // namespace impetus
+
+namespace impetus::particles {
+namespace {
+
+TEST(ParticleWorld, drag_too_strong_for_the_step_stops_a_particle_instead_of_flinging_it) {
+  // A 1 g cloth particle of 10 cm in strong air, yanked to 175 m/s (a mouse drag moved it 2.9 m
+  // in one step): drag of 1/2 rho Cd pi r^2 |v| / m = 1700 /s, far past 1/h = 240 /s. Explicit
+  // steps reversed and grew the velocity (1.6e6 m/s, then NaN: found by the samples app); the
+  // drag now stops the particle relative to the air within a step at most, never reverses it.
+  for (const ParticleIntegrator integrator : {ParticleIntegrator::semiImplicitEuler, ParticleIntegrator::explicitEuler,
+                                              ParticleIntegrator::velocityVerlet, ParticleIntegrator::rk4}) {
+    ParticleWorldSettings settings;
+    settings.gravity = {};
+    settings.dragCoefficient = 1.0f;
+    settings.airDensity = 1.225f;
+    settings.integrator = integrator;
+    ParticleWorld world(settings);
+    ParticleDef def;
+    def.mass = 0.001f;
+    def.radius = 0.1f;
+    def.velocity = {175.0f, 0.0f, 0.0f};
+    world.createParticle(def);
+    float previous = 175.0f;
+    for (int step = 0; step < 120; ++step) {
+      world.step(1.0f / 60.0f);
+      const Vec3f v = world.velocities()[0];
+      ASSERT_TRUE(std::isfinite(v.x)) << static_cast<int>(integrator) << " step " << step;
+      ASSERT_GE(v.x, 0.0f) << "drag reversed the motion";
+      ASSERT_LE(v.x, previous) << "drag sped the particle up";
+      previous = v.x;
+    }
+  }
+}
+
+} // namespace
+} // namespace impetus::particles
