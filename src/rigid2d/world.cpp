@@ -6,7 +6,9 @@
 #include <impetus/math/validate.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
 
 namespace impetus::rigid2d {
@@ -351,6 +353,10 @@ BodyId World::createBody(const BodyDef& def) {
   requireNonNegative(def.angularDamping, "angularDamping");
   requireFinite(def.gravityScale, "gravityScale");
   Impl& w = *impl_;
+  // A cast integer would otherwise be treated as no known type: neither moved nor solved.
+  if (def.type != BodyType::staticBody && def.type != BodyType::kinematicBody && def.type != BodyType::dynamicBody) {
+    throwInvalid("type", static_cast<int>(def.type), "must be BodyType::staticBody, kinematicBody or dynamicBody");
+  }
   const BodyId id = w.bodyIds.allocateId<BodyTag>();
   if (w.bodies.size() <= id.index) {
     w.bodies.resize(id.index + 1);
@@ -468,8 +474,8 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const Capsule& caps
   requireFinite(capsule.center1, "center1");
   requireFinite(capsule.center2, "center2");
   requirePositive(capsule.radius, "radius");
-  if (distance(capsule.center1, capsule.center2) <= linearSlop) {
-    throwInvalid("center2", 0.0, "capsule ends coincide: use a circle");
+  if (const float gap = distance(capsule.center1, capsule.center2); gap <= linearSlop) {
+    throwInvalid("center2", gap, "capsule ends coincide: use a circle");
   }
   return addShape(*impl_, body, def, capsule);
 }
@@ -478,12 +484,24 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& poly
     throwInvalid("polygon.count", polygon.count, "build polygons with makePolygon or makeBox");
   }
   return addShape(*impl_, body, def, polygon);
+  // Polygon is a plain struct: one filled in by hand (or corrupted) would otherwise reach the
+  // broadphase and the narrowphase with NaN bounds or normals of no direction.
+  for (std::size_t i = 0; i < static_cast<std::size_t>(polygon.count); ++i) {
+    requireFinite(polygon.vertices[i], "polygon.vertices[" + std::to_string(i) + "]");
+    const std::string normal = "polygon.normals[" + std::to_string(i) + "]";
+    requireFinite(polygon.normals[i], normal);
+    if (const float len = length(polygon.normals[i]); std::abs(len - 1.0f) > 1e-3f) {
+      throwInvalid(normal, len, "must be a unit vector (build polygons with makePolygon or makeBox)");
+    }
+  }
+  requireFinite(polygon.centroid, "polygon.centroid");
+  requireNonNegative(polygon.radius, "polygon.radius");
 }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segment) {
   requireFinite(segment.point1, "point1");
   requireFinite(segment.point2, "point2");
-  if (distance(segment.point1, segment.point2) <= linearSlop) {
-    throwInvalid("point2", 0.0, "segment is too short");
+  if (const float gap = distance(segment.point1, segment.point2); gap <= linearSlop) {
+    throwInvalid("point2", gap, "segment is too short");
   }
   return addShape(*impl_, body, def, segment);
 }
@@ -544,14 +562,17 @@ void World::setTransform(BodyId id, const Vec2f& position, float angle) {
 void World::setLinearVelocity(BodyId id, const Vec2f& v) {
   Body& b = impl_->body(id);
   if (b.type != BodyType::staticBody) {
-    b.linearVelocity = requireFinite(v, "linearVelocity");
+  // Checked before the body's type: a NaN is a caller's bug even where the value is ignored.
+  requireFinite(v, "linearVelocity");
+    b.linearVelocity = v;
     b.wake();
   }
 }
 void World::setAngularVelocity(BodyId id, float av) {
   Body& b = impl_->body(id);
   if (b.type != BodyType::staticBody && !b.fixedRotation) {
-    b.angularVelocity = static_cast<float>(requireFinite(av, "angularVelocity"));
+  requireFinite(av, "angularVelocity");
+    b.angularVelocity = av;
     b.wake();
   }
 }

@@ -58,9 +58,9 @@ void validateSpring(float hertz, float dampingRatio) {
   requireNonNegative(dampingRatio, "dampingRatio");
 }
 
-void validateLimits(float lower, float upper, const char* lowerField) {
+void validateLimits(float lower, float upper, const char* lowerField, const char* upperField) {
   requireFinite(lower, lowerField);
-  requireFinite(upper, "upper");
+  requireFinite(upper, upperField);
   if (lower > upper) {
     throwInvalid(lowerField, lower, "lower limit above the upper one");
   }
@@ -69,7 +69,7 @@ void validateLimits(float lower, float upper, const char* lowerField) {
 /// The joint angle lives in (-pi, pi] (it is measured from the bodies' rotations), so limits
 /// beyond half a turn could never be told apart from their wrap-around.
 void validateRevoluteLimits(float lower, float upper) {
-  validateLimits(lower, upper, "lowerAngle");
+  validateLimits(lower, upper, "lowerAngle", "upperAngle");
   constexpr float pi = 3.14159265f;
   if (lower < -pi) {
     throwInvalid("lowerAngle", lower, "must be >= -pi");
@@ -181,7 +181,7 @@ JointId World::createJoint(const RevoluteJointDef& def) {
 JointId World::createJoint(const PrismaticJointDef& def) {
   requireFinite(def.referenceAngle, "referenceAngle");
   if (def.enableLimit) {
-    validateLimits(def.lowerTranslation, def.upperTranslation, "lowerTranslation");
+    validateLimits(def.lowerTranslation, def.upperTranslation, "lowerTranslation", "upperTranslation");
   }
   requireFinite(def.motorSpeed, "motorSpeed");
   requireNonNegative(def.maxMotorForce, "maxMotorForce");
@@ -221,7 +221,7 @@ JointId World::createJoint(const WeldJointDef& def) {
 
 JointId World::createJoint(const WheelJointDef& def) {
   if (def.enableLimit) {
-    validateLimits(def.lowerTranslation, def.upperTranslation, "lowerTranslation");
+    validateLimits(def.lowerTranslation, def.upperTranslation, "lowerTranslation", "upperTranslation");
   }
   requireFinite(def.motorSpeed, "motorSpeed");
   requireNonNegative(def.maxMotorTorque, "maxMotorTorque");
@@ -334,7 +334,7 @@ void World::setPrismaticMotor(JointId id, bool enable, float speed, float maxFor
 }
 
 void World::setPrismaticLimit(JointId id, bool enable, float lower, float upper) {
-  validateLimits(lower, upper, "lowerTranslation");
+  validateLimits(lower, upper, "lowerTranslation", "upperTranslation");
   auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
   p.def.enableLimit = enable;
   p.def.lowerTranslation = lower;

@@ -6,6 +6,7 @@
 #include <impetus/math/validate.hpp>
 
 #include <algorithm>
+#include <string>
 
 namespace impetus::rigid2d {
 
@@ -115,7 +116,15 @@ std::optional<RayHit> World::castShape(const ShapeProxy& proxy, const Transform2
   if (proxy.count < 1 || proxy.count > maxPolygonVertices) {
     throwInvalid("proxy.count", proxy.count, "must be 1 to 8 points");
   }
+  // Checked here, under the caller's names: the swept box below is built before shapeCast
+  // would check them (as "xfB"), and a NaN point or radius would give a NaN box.
+  for (std::size_t i = 0; i < static_cast<std::size_t>(proxy.count); ++i) {
+    requireFinite(proxy.points[i], "proxy.points[" + std::to_string(i) + "]");
+  }
+  requireNonNegative(proxy.radius, "proxy.radius");
   requireFinite(transform.p, "transform.p");
+  requireFinite(transform.q.c, "transform.q.c");
+  requireFinite(transform.q.s, "transform.q.s");
   requireFinite(translation, "translation");
   const Impl& w = *impl_;
   // The box the proxy sweeps through.
