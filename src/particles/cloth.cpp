@@ -41,7 +41,18 @@ void validate(const ClothDef& def) {
   if (!(lengthSquared(cross(def.across, def.down)) > 0.0f)) {
     throwInvalid("down", 0.0, "must be non-zero and not parallel to across");
   }
+  // Finite edges can still put the far corners beyond a float: the world would refuse the cloth
+  // half built.
+  if (const Vec3f corner = def.origin + def.across; !isFinite(corner)) {
+    throwInvalid("across", static_cast<double>(length(corner)), "puts a corner beyond single precision");
+  }
+  if (const Vec3f corner = def.origin + def.across + def.down; !isFinite(corner) || !isFinite(def.origin + def.down)) {
+    throwInvalid("down", static_cast<double>(length(corner)), "puts a corner beyond single precision");
+  }
   requirePositive(def.totalMass, "totalMass");
+  if (!(def.totalMass / (static_cast<float>(def.rows) * static_cast<float>(def.columns)) > 0.0f)) {
+    throwInvalid("totalMass", def.totalMass, "too small to share among rows * columns particles");
+  }
   requirePositive(def.particleRadius, "particleRadius");
   requireNonNegative(def.structuralCompliance, "structuralCompliance");
   requireNonNegative(def.shearCompliance, "shearCompliance");

@@ -7,6 +7,7 @@
 #include <impetus/math/validate.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace impetus {
@@ -39,6 +40,11 @@ void validateSettings(const ParticleWorldSettings& s) {
   requireNonNegative(s.dragCoefficient, "dragCoefficient");
   requireNonNegative(s.airDensity, "airDensity");
   requireNonNegative(s.restThreshold, "restThreshold");
+  // A cast integer would select no integrator: the particles would never move.
+  if (s.integrator != ParticleIntegrator::semiImplicitEuler && s.integrator != ParticleIntegrator::explicitEuler &&
+      s.integrator != ParticleIntegrator::velocityVerlet && s.integrator != ParticleIntegrator::rk4) {
+    throwInvalid("integrator", static_cast<int>(s.integrator), "unknown ParticleIntegrator");
+  }
   const float e = s.particleRestitution;
   if (!(e >= 0.0f && e <= 1.0f)) {
     throwInvalid("particleRestitution", e, "must be in [0, 1]");
@@ -246,7 +252,7 @@ ObstacleId ParticleWorld::addObstacle(const BoxObstacle& box, const SurfaceMater
   requirePositive(box.halfExtents.y, "halfExtents.y");
   requirePositive(box.halfExtents.z, "halfExtents.z");
   if (!isFinite(box.rotation) || !(lengthSquared(box.rotation) > 0.0f)) {
-    throwInvalid("rotation", 0.0, "must be a finite, non-zero quaternion");
+    throwInvalid("rotation", std::sqrt(lengthSquared(box.rotation)), "must be a finite, non-zero quaternion");
   }
   return addShape(*impl_, BoxObstacle{box.center, box.halfExtents, normalize(box.rotation)}, material);
 }
@@ -314,7 +320,11 @@ EmitterId ParticleWorld::addEmitter(const EmitterDef& def) {
   if (!(def.maxSpeed >= def.minSpeed) || !std::isfinite(def.maxSpeed)) {
     throwInvalid("maxSpeed", def.maxSpeed, "must be finite and >= minSpeed");
   }
-  requireNonNegative(def.rate, "rate");
+  // The step converts the particles due (rate * dt) to an int: beyond 1e9 per second that
+  // overflows (undefined behaviour), and no effect needs that many.
+  if (!(def.rate >= 0.0f && def.rate <= 1e9f)) {
+    throwInvalid("rate", def.rate, "must be between 0 and 1e9 particles per second");
+  }
   if (def.burst < 0 || def.burst > 1'000'000) {
     throwInvalid("burst", def.burst, "must be between 0 and 1000000");
   }
@@ -322,8 +332,10 @@ EmitterId ParticleWorld::addEmitter(const EmitterDef& def) {
     throwInvalid("duration", def.duration, "must be non-negative");
   }
   requirePositive(def.minLifetime, "minLifetime");
-  if (!(def.maxLifetime >= def.minLifetime)) {
-    throwInvalid("maxLifetime", def.maxLifetime, "must be >= minLifetime");
+  // Finite: a lifetime drawn uniformly from [minLifetime, inf) is inf, or NaN (inf * 0) when the
+  // generator draws 0, and a NaN lifetime would make the step throw.
+  if (!(def.maxLifetime >= def.minLifetime) || !std::isfinite(def.maxLifetime)) {
+    throwInvalid("maxLifetime", def.maxLifetime, "must be finite and >= minLifetime");
   }
   requirePositive(def.mass, "mass");
   requirePositive(def.radius, "radius");

@@ -4,6 +4,8 @@
 #include <impetus/math/validate.hpp>
 #include <impetus/particles/rope.hpp>
 
+#include <cmath>
+
 namespace impetus {
 
 RopeDef RopeDef::along(const Vec3f& start, const Vec3f& direction, float length) {
@@ -23,13 +25,19 @@ namespace {
 void validate(const RopeDef& def) {
   requireFinite(def.start, "start");
   requireFinite(def.end, "end");
-  if (!(distance(def.start, def.end) > 0.0f)) {
-    throwInvalid("end", 0.0, "must differ from start (the rope needs a length)");
+  // Finite too: ends at +-3e38 are finite but their distance is not, and the particles
+  // interpolated between them would be NaN.
+  if (const float length = distance(def.start, def.end); !(length > 0.0f && std::isfinite(length))) {
+    throwInvalid("end", length, "must differ from start by a finite distance (the rope needs a length)");
   }
   if (def.segments < 1 || def.segments > 1'000'000) {
     throwInvalid("segments", def.segments, "must be between 1 and 1000000");
   }
   requirePositive(def.totalMass, "totalMass");
+  // Each particle's share must stay a positive float, or the world would refuse the rope half built.
+  if (!(def.totalMass / static_cast<float>(def.segments + 1) > 0.0f)) {
+    throwInvalid("totalMass", def.totalMass, "too small to share among segments + 1 particles");
+  }
   requirePositive(def.particleRadius, "particleRadius");
   requireNonNegative(def.compliance, "compliance");
   requirePositive(def.stiffness, "stiffness");
