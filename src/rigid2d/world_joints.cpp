@@ -277,6 +277,22 @@ void World::destroyJoint(JointId id) {
 bool World::isValid(JointId id) const noexcept { return impl_->jointIds.isValidId(id); }
 std::size_t World::jointCount() const noexcept { return impl_->jointIds.size(); }
 JointType World::jointType(JointId id) const { return impl_->joint(id).type(); }
+void World::jointIds(std::vector<JointId>& out) const {
+  out.clear();
+  for (const Joint& j : impl_->joints) {
+    if (j.alive) {
+      out.push_back(j.id);
+    }
+  }
+}
+Vec2f World::jointAnchorA(JointId id) const {
+  const Joint& j = impl_->joint(id);
+  return transformPoint(impl_->bodies[j.bodyA].transform, j.localAnchorA);
+}
+Vec2f World::jointAnchorB(JointId id) const {
+  const Joint& j = impl_->joint(id);
+  return transformPoint(impl_->bodies[j.bodyB].transform, j.localAnchorB);
+}
 BodyId World::jointBodyA(JointId id) const { return impl_->bodies[impl_->joint(id).bodyA].id; }
 BodyId World::jointBodyB(JointId id) const { return impl_->bodies[impl_->joint(id).bodyB].id; }
 Vec2f World::jointReactionForce(JointId id) const { return impl_->joint(id).reaction.force; }

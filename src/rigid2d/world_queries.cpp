@@ -174,6 +174,19 @@ std::uint64_t World::stateHash() const {
   return hash.value();
 }
 
+bool World::isBullet(BodyId id) const { return impl_->body(id).bullet; }
+bool World::isSleepEnabled(BodyId id) const { return impl_->body(id).enableSleep; }
+bool World::isValid(ShapeId id) const noexcept { return impl_->shapeIds.isValidId(id); }
+
+void World::contacts(std::vector<ContactData>& out) const {
+  out.clear();
+  for (const detail::Contact& c : impl_->contacts) {
+    if (c.alive && !c.sensor && c.manifold.pointCount > 0) {
+      out.push_back({impl_->shapes[c.shapeA].id, impl_->shapes[c.shapeB].id, c.manifold});
+    }
+  }
+}
+
 void World::bodyIds(std::vector<BodyId>& out) const {
   out.clear();
   for (const detail::Body& b : impl_->bodies) {

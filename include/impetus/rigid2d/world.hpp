@@ -19,6 +19,7 @@
 #include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/geometry.hpp>
 #include <impetus/rigid2d/joint.hpp>
+#include <impetus/rigid2d/manifold.hpp>
 #include <impetus/rigid2d/types.hpp>
 
 #include <cstddef>
@@ -72,6 +73,15 @@ struct RayHit {
   Vec2f point;
   Vec2f normal;
   float fraction = 0.0f;
+};
+
+/// A touching contact for inspection (debug draw, tools): its shapes, in the order the world
+/// keeps them, and its manifold as of the last step (points and normal when the step began,
+/// the impulses the solver applied over the step).
+struct ContactData {
+  ShapeId shapeA;
+  ShapeId shapeB;
+  Manifold manifold;
 };
 
 /// The dynamic state of a World, saved for rollback (World::saveState, World::restoreState):
@@ -130,6 +140,11 @@ public:
   [[nodiscard]] bool isValid(JointId id) const noexcept;
   [[nodiscard]] std::size_t jointCount() const noexcept;
   [[nodiscard]] JointType jointType(JointId id) const;
+  /// Every live joint's id, in slot order, into `out` (cleared first; its capacity is reused).
+  void jointIds(std::vector<JointId>& out) const;
+  /// The joint's anchors on bodies A and B, world, m.
+  [[nodiscard]] Vec2f jointAnchorA(JointId id) const;
+  [[nodiscard]] Vec2f jointAnchorB(JointId id) const;
   [[nodiscard]] BodyId jointBodyA(JointId id) const;
   [[nodiscard]] BodyId jointBodyB(JointId id) const;
   /// The force (N) and torque (N m) the joint applied to body B over the last step.
@@ -220,6 +235,11 @@ public:
   /// A body's shapes, in creation order, into `out` (cleared first).
   void bodyShapes(BodyId body, std::vector<ShapeId>& out) const;
   [[nodiscard]] BodyType bodyType(BodyId id) const;
+  [[nodiscard]] bool isBullet(BodyId id) const;
+  [[nodiscard]] bool isSleepEnabled(BodyId id) const;
+  [[nodiscard]] bool isValid(ShapeId id) const noexcept;
+  /// Every touching, non-sensor contact, in slot order, into `out` (cleared first).
+  void contacts(std::vector<ContactData>& out) const;
   /// A shape's geometry in its body's frame, and its material.
   [[nodiscard]] ShapeGeometry shapeGeometry(ShapeId shape) const;
   [[nodiscard]] float shapeDensity(ShapeId shape) const;
