@@ -81,6 +81,7 @@ struct EpisodeStats {
 struct Episode {
   World world;
   std::vector<BodyId> bodies;    ///< live dynamic and kinematic bodies
+  std::vector<float> extents;    ///< each body's bounding radius about its origin, m
   std::vector<JointId> joints;   ///< live joints
   std::vector<BodyId> destroyed; ///< ids that must stay invalid
   std::vector<JointId> destroyedJoints;
@@ -97,7 +98,8 @@ WorldDef worldDef(TaskRunner* runner) {
 
 /// One random body: a circle, capsule, box or polygon of size 1 cm to 10 m whose density makes
 /// its mass 1 to 100 kg.
-BodyId addBody(Episode& e, Random& rng, const Vec2f& at, bool closed) {
+/// Adds the body to e.bodies (and its bounding radius to e.extents).
+void addBody(Episode& e, Random& rng, const Vec2f& at, bool closed) {
   BodyDef def;
   def.type = (!closed && rng.chance(0.05f)) ? BodyType::kinematicBody : BodyType::dynamicBody;
   def.position = at;
@@ -118,6 +120,7 @@ BodyId addBody(Episode& e, Random& rng, const Vec2f& at, bool closed) {
   shape.restitution = closed ? 0.0f : (rng.chance(0.3f) ? rng.uniform(0.0f, 1.0f) : 0.0f);
   shape.rollingResistance = closed ? 0.0f : (rng.chance(0.2f) ? rng.uniform(0.0f, 0.2f) : 0.0f);
   float area = 0.0f;
+  float extent = size;
   switch (rng.below(4)) {
   case 0:
     area = 3.14159f * size * size;
@@ -137,6 +140,7 @@ BodyId addBody(Episode& e, Random& rng, const Vec2f& at, bool closed) {
     size = std::max(size, 0.05f);
     const float aspect = std::max(rng.logUniform(-1.0f, 0.0f), 0.02f / size);
     area = 4.0f * size * size * aspect;
+    extent = size * std::sqrt(1.0f + aspect * aspect);
     shape.density = mass / area;
     e.world.createShape(body, shape, makeBox(size, size * aspect));
     break;
@@ -151,19 +155,22 @@ BodyId addBody(Episode& e, Random& rng, const Vec2f& at, bool closed) {
     }
     const Polygon polygon = makePolygon(points, rng.chance(0.3f) ? 0.1f * size : 0.0f);
     area = 2.0f * size * size; // a rough area: the density only sets the mass scale
+    extent = 1.1f * size;
     shape.density = mass / area;
     e.world.createShape(body, shape, polygon);
     break;
   }
   }
-  return body;
+  e.bodies.push_back(body);
+  e.extents.push_back(extent);
 }
 
-/// A random joint between two bodies near each other (closed episodes: no motors or springs).
-void addJoint(Episode& e, Random& rng, BodyId a, BodyId b, bool closed) {
+/// A random joint between body A and body B placed against its right side (closed episodes: no
+/// motors or springs); the pin is where their bounding circles touch, `extentA` right of A.
+void addJoint(Episode& e, Random& rng, BodyId a, BodyId b, float extentA, bool closed) {
   const Vec2f pa = e.world.worldCenterOfMass(a);
   const Vec2f pb = e.world.worldCenterOfMass(b);
-  const Vec2f mid = (pa + pb) * 0.5f;
+  const Vec2f mid = e.world.position(a) + Vec2f{extentA, 0.0f};
   const auto local = [&](BodyId body, const Vec2f& p) {
     const Transform2f xf = e.world.transform(body);
     return inverseTransformPoint(xf, p);
@@ -269,7 +276,7 @@ double mechanicalEnergy(const Episode& e) {
 
 std::unique_ptr<Episode> buildEpisode(std::uint64_t seed, int index, TaskRunner* runner, bool joints) {
   Random rng(seed * 0x100000001b3ULL + static_cast<std::uint64_t>(index));
-  auto e = std::make_unique<Episode>(Episode{World(worldDef(runner)), {}, {}, {}, {}, false, 0.0, 0.0});
+  auto e = std::make_unique<Episode>(Episode{World(worldDef(runner)), {}, {}, {}, {}, {}, false, 0.0, 0.0});
   e->closed = rng.chance(0.3f);
   // The arena: four thick walls.
   const BodyId arena = e->world.createBody({});
@@ -284,12 +291,27 @@ std::unique_ptr<Episode> buildEpisode(std::uint64_t seed, int index, TaskRunner*
   for (int i = 0; i < count; ++i) {
     const float x = -54.0f + 12.0f * static_cast<float>(i % 10) + rng.uniform(-0.5f, 0.5f);
     const float y = -54.0f + 12.0f * static_cast<float>(i / 10) + rng.uniform(-0.5f, 0.5f);
-    e->bodies.push_back(addBody(*e, rng, {x, y}, e->closed));
+    addBody(*e, rng, {x, y}, e->closed);
   }
+  // Joints join a body to its right-hand neighbour in the grid, moved up against it (bounding
+  // circles touching), so lever arms are the bodies' own sizes, as in a game's chains, ragdolls
+  // and vehicles; the joined bodies keep their own random velocities (the joint's first step is
+  // a violent, inelastic coupling). In index order, so chains stay chains.
+  std::vector<std::size_t> joined;
   for (int j = 0; joints && j < count / 5; ++j) {
-    const auto a = static_cast<std::size_t>(rng.below(count));
-    const std::size_t b = a + 1 < e->bodies.size() ? a + 1 : a - 1;
-    addJoint(*e, rng, e->bodies[a], e->bodies[b], e->closed);
+    const auto a = static_cast<std::size_t>(rng.below(count - 1));
+    if (a % 10 != 9) {
+      joined.push_back(a);
+    }
+  }
+  std::sort(joined.begin(), joined.end());
+  joined.erase(std::unique(joined.begin(), joined.end()), joined.end());
+  for (const std::size_t a : joined) {
+    const BodyId bodyA = e->bodies[a];
+    const BodyId bodyB = e->bodies[a + 1];
+    const Vec2f at = e->world.position(bodyA) + Vec2f{e->extents[a] + e->extents[a + 1], 0.0f};
+    e->world.setTransform(bodyB, at, e->world.angle(bodyB));
+    addJoint(*e, rng, bodyA, bodyB, e->extents[a], e->closed);
   }
   e->energy0 = mechanicalEnergy(*e);
   double scale = 0.0;
@@ -309,6 +331,7 @@ void meddle(Episode& e, Random& rng) {
     e.world.destroyBody(victim);
     e.destroyed.push_back(victim);
     e.bodies.erase(e.bodies.begin() + static_cast<std::ptrdiff_t>(i));
+    e.extents.erase(e.extents.begin() + static_cast<std::ptrdiff_t>(i));
     // Its joints went with it.
     for (std::size_t j = 0; j < e.joints.size();) {
       if (!e.world.isValid(e.joints[j])) {
@@ -320,7 +343,7 @@ void meddle(Episode& e, Random& rng) {
     }
   }
   if (rng.chance(0.02f)) {
-    e.bodies.push_back(addBody(e, rng, {rng.uniform(-50.0f, 50.0f), 50.0f}, false));
+    addBody(e, rng, {rng.uniform(-50.0f, 50.0f), 50.0f}, false);
   }
   if (rng.chance(0.01f) && !e.bodies.empty()) {
     const BodyId b = e.bodies[static_cast<std::size_t>(rng.below(static_cast<int>(e.bodies.size())))];
