@@ -3,6 +3,7 @@
 #include <impetus/math/scalar.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace impetus::geo {
 namespace {
@@ -11,18 +12,28 @@ constexpr double halfPi = pi<double> / 2.0;
 
 bool atPole(double latitude) { return std::abs(latitude) == 90.0; }
 
-/// dpsi = psi(phi2) - psi(phi1) without cancellation: psi = atanh(sin phi) and
-///   atanh(a) - atanh(b) = atanh((a - b)/(1 - a b)),
+/// psi = asinh(tan phi): the same as ln(tan(pi/4 + phi/2)) and atanh(sin phi), but it keeps its
+/// digits near the poles, where 1 - sin phi cancels.
+double stretched(double phi) { return std::asinh(std::tan(phi)); }
+
+/// dpsi = psi(phi2) - psi(phi1). For short north-south steps the difference of two psi loses
+/// the step's digits; there it uses
+///   atanh(a) - atanh(b) = atanh((a - b)/(1 - a b)),  a = sin phi2, b = sin phi1,
 ///   a - b = 2 cos((phi1 + phi2)/2) sin((phi2 - phi1)/2),
 ///   1 - a b = 2 sin^2((phi2 - phi1)/2) + cos phi1 cos phi2,
-/// so short north-south steps keep their digits (a plain difference of logarithms loses them).
+/// which is exact to rounding while its argument stays well below 1 (|dpsi| < 0.55). Larger
+/// steps take the plain difference (the atanh of an argument near 1 would cancel instead).
 /// Not for a pole (infinite).
 double stretchedDifference(double phi1, double phi2) {
   const double half = 0.5 * (phi2 - phi1);
   const double sinHalf = std::sin(half);
   const double numerator = 2.0 * std::cos(0.5 * (phi1 + phi2)) * sinHalf;
   const double denominator = 2.0 * sinHalf * sinHalf + std::cos(phi1) * std::cos(phi2);
-  return std::atanh(numerator / denominator);
+  const double x = numerator / denominator;
+  if (std::abs(x) <= 0.5) {
+    return std::atanh(x);
+  }
+  return stretched(phi2) - stretched(phi1);
 }
 
 /// q = dphi/dpsi: the cosine of latitude averaged along the line (cos phi on an east-west
@@ -48,7 +59,10 @@ double shortLongitudeDifference(const LatLon& from, const LatLon& to) {
 
 double mercatorLatitude(double latitude) {
   requireValid(LatLon{latitude, 0.0}, "point");
-  return std::atanh(std::sin(degToRad(latitude)));
+  if (atPole(latitude)) {
+    return std::copysign(std::numeric_limits<double>::infinity(), latitude);
+  }
+  return stretched(degToRad(latitude));
 }
 
 double rhumbDistance(const LatLon& from, const LatLon& to, double radius) {

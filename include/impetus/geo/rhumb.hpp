@@ -19,7 +19,7 @@
 
 namespace impetus::geo {
 
-/// Mercator stretched latitude psi = ln(tan(pi/4 + phi/2)) = atanh(sin phi), rad, for a
+/// Mercator stretched latitude psi = ln(tan(pi/4 + phi/2)) = asinh(tan phi), rad, for a
 /// latitude phi in degrees (-90..90); +-infinity at the poles.
 [[nodiscard]] double mercatorLatitude(double latitude);
 
