@@ -31,19 +31,29 @@ double parallelAxis(double inertiaAboutCenterOfMass, double mass, double distanc
 }
 
 Mat33d parallelAxis(const Mat33d& inertiaAboutCenterOfMass, double mass, const Vec3d& offset) {
+  requireFinite(inertiaAboutCenterOfMass, "inertia");
   requireNonNegative(mass, "mass");
   requireFinite(offset, "offset");
   return inertiaAboutCenterOfMass + (Mat33d::identity() * lengthSquared(offset) - outer(offset, offset)) * mass;
 }
 
-Mat33d rotateInertia(const Mat33d& inertia, const Mat33d& rotation) { return rotation * inertia * transpose(rotation); }
+Mat33d rotateInertia(const Mat33d& inertia, const Mat33d& rotation) {
+  requireFinite(inertia, "inertia");
+  requireFinite(rotation, "rotation");
+  return rotation * inertia * transpose(rotation);
+}
 
 Vec3d centerOfMass(std::span<const PointMass> points) { return combine(points).centerOfMass; }
 
 MassProperties3 combine(std::span<const PointMass> points) {
   std::vector<MassPart> parts;
   parts.reserve(points.size());
-  for (const PointMass& p : points) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const PointMass& p = points[i];
+    // Moments about the point's own axes: a negative one belongs to no body.
+    for (int axis = 0; axis < 3; ++axis) {
+      requireNonNegative(p.localInertia[axis], partField(i, std::string("localInertia.") + "xyz"[axis]));
+    }
     parts.push_back({p.mass, p.position, Mat33d::diagonal(p.localInertia), Mat33d::identity()});
   }
   return combine(parts);

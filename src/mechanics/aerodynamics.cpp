@@ -46,10 +46,8 @@ double xMinusSinOverX2(double x) {
 }
 
 void validate(const MagnusPlaneLaunch& launch, double time) {
-  requireFinite(launch.position.x, "position");
-  requireFinite(launch.position.y, "position");
-  requireFinite(launch.velocity.x, "velocity");
-  requireFinite(launch.velocity.y, "velocity");
+  requireFinite(launch.position, "position");
+  requireFinite(launch.velocity, "velocity");
   requirePositive(launch.mass, "mass");
   requireFinite(launch.magnusCoefficient, "magnusCoefficient");
   requireNonNegative(launch.gravity, "gravity");

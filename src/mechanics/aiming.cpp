@@ -1,5 +1,6 @@
 #include <impetus/error.hpp>
 #include <impetus/math/scalar.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/mechanics/aiming.hpp>
 
 namespace impetus {
@@ -55,9 +56,8 @@ MinimumSpeed minimumLaunchSpeed(double distance, double height, double gravity) 
 }
 
 std::optional<Aim3> aimAt(const Vec3d& from, const Vec3d& to, double speed, double gravity) {
-  if (!isFinite(from) || !isFinite(to)) {
-    throwInvalid("target", std::nan(""), "positions must be finite");
-  }
+  requireFinite(from, "from");
+  requireFinite(to, "to");
   const Vec3d d = to - from;
   const double horizontal = std::hypot(d.x, d.z);
   const std::optional<AimSolutions> angles = launchAngles(horizontal, d.y, speed, gravity);

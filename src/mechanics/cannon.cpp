@@ -62,6 +62,9 @@ double segmentEntry(const Vec3d& p0, const Vec3d& p1, const Vec3d& lo, const Vec
 } // namespace
 
 Vec3d barrelDirection(double altitude, double azimuth) {
+  // Public on its own too: a NaN angle would otherwise come back as a NaN direction.
+  requireFinite(altitude, "altitude");
+  requireFinite(azimuth, "azimuth");
   const double b = std::sin(altitude); // projection of a unit barrel on the x-z plane
   return {b * std::cos(azimuth), std::cos(altitude), b * std::sin(azimuth)};
 }

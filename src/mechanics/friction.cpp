@@ -73,6 +73,7 @@ PushedBlock pushBlock(double mass, double pushForce, double staticCoefficient, d
                       double gravity) {
   requirePositive(mass, "mass");
   requireNonNegative(gravity, "gravity");
+  requireFinite(pushForce, "pushForce"); // here, or frictionAtRest would name it appliedForce
   PushedBlock b{};
   b.normalForce = mass * gravity;
   const FrictionResponse f = frictionAtRest(pushForce, b.normalForce, staticCoefficient, kineticCoefficient);

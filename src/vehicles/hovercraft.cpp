@@ -31,6 +31,7 @@ Hovercraft::Hovercraft(rigid2d::World& world, const HovercraftParams& params, co
   requireFinite(params.centreOfDrag, "centreOfDrag");
   requireFinite(params.portThrusterPoint, "portThrusterPoint");
   requireFinite(params.starboardThrusterPoint, "starboardThrusterPoint");
+  requireFinite(initialThrust, "initialThrust"); // before the body exists, under its own name
   rigid2d::BodyDef def;
   def.type = rigid2d::BodyType::dynamicBody;
   def.position = position;
