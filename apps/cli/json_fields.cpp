@@ -21,6 +21,10 @@ json parseObject(const std::string& text, const std::string& expectation) {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
     fail("json", std::string("malformed JSON: ") + e.what());
+  } catch (const json::out_of_range& e) {
+    // A number beyond a double (1e999) is reported as out_of_range, not as a parse error: left
+    // uncaught it would abort the tool instead of naming the input.
+    fail("json", std::string("number out of range: ") + e.what());
   }
   if (!doc.is_object()) {
     fail("document", "expected " + expectation);

@@ -432,6 +432,15 @@ private:
       d.referenceAngle = angleDeg(f, "reference_angle_deg", initialAngle(d.bodyB) - initialAngle(d.bodyA));
       d.enableLimit = f.boolean("enable_limit", d.enableLimit);
       limits(f, "lower_angle_deg", "upper_angle_deg", d.lowerAngle, d.upperAngle, true);
+      if (d.enableLimit) {
+        // The joint angle lives in (-180, 180] degrees. Checked here, in the file's unit and under
+        // its keys: the world would name lowerAngle in radians.
+        for (const char* key : {"lower_angle_deg", "upper_angle_deg"}) {
+          if (const float deg = f.real(key, 0.0); deg < -180.0f || deg > 180.0f) {
+            throwInvalid(f.path(key), deg, "must be in [-180, 180] degrees");
+          }
+        }
+      }
       d.enableMotor = f.boolean("enable_motor", d.enableMotor);
       d.motorSpeed = f.real("motor_speed", d.motorSpeed);
       d.maxMotorTorque = f.nonNegative("max_motor_torque", d.maxMotorTorque);

@@ -214,11 +214,17 @@ std::string kebabCase(const std::string& field) {
 /// of the model's parameters, so the message names what the user typed.
 std::string asParameterMessage(const Model& model, const Error& e) {
   std::string what = e.what();
+  const auto isParam = [&](const std::string& name) {
+    return std::any_of(model.params.begin(), model.params.end(), [&](const Param& p) { return p.name == name; });
+  };
   const std::string param = kebabCase(e.field());
-  const bool isParam =
-      std::any_of(model.params.begin(), model.params.end(), [&](const Param& p) { return p.name == param; });
-  if (isParam && what.rfind(e.field(), 0) == 0) {
+  if (isParam(param) && what.rfind(e.field(), 0) == 0) {
     return "--" + param + what.substr(e.field().size());
+  }
+  // A component of a vector parameter: "fluidVelocity.x = nan: ..." -> "--fluid-velocity.x = nan: ...".
+  const std::size_t dot = e.field().rfind('.');
+  if (dot != std::string::npos && isParam(kebabCase(e.field().substr(0, dot))) && what.rfind(e.field(), 0) == 0) {
+    return "--" + kebabCase(e.field().substr(0, dot)) + what.substr(dot);
   }
   return what;
 }

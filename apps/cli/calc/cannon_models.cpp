@@ -61,6 +61,13 @@ CannonSetup cannonFromArgs(const Args& a) {
 }
 
 Result shotResult(const Args& a, const ShellFlight& flight, const CannonSetup& cannon) {
+  // Checked under the parameters' names: the library would name target.center.x, target.size.x...
+  for (const char* name : {"target-x", "target-y", "target-z"}) {
+    requireFinite(a.number(name), name);
+  }
+  for (const char* name : {"target-length", "target-height", "target-width"}) {
+    requireNonNegative(a.number(name), name);
+  }
   const TargetBox target{{a.number("target-x"), a.number("target-y"), a.number("target-z")},
                          {a.number("target-length"), a.number("target-height"), a.number("target-width")}};
   const ShotResult shot = fireAtTarget(flight, target, a.number("time-step"));

@@ -125,7 +125,10 @@ void registerMassModels(Registry& registry) {
            {lengthParam("size-x", "edge along x"), lengthParam("size-y", "edge along y"),
             lengthParam("size-z", "edge along z")},
            [](const Args& a) {
-             return Box{{a.number("size-x"), a.number("size-y"), a.number("size-z")}};
+             // Checked under the parameters' names: the library would name size.x, size.y, size.z.
+             return Box{{requireNonNegative(a.number("size-x"), "size-x"),
+                         requireNonNegative(a.number("size-y"), "size-y"),
+                         requireNonNegative(a.number("size-z"), "size-z")}};
            });
   addSolid(registry, "inertia-rod", "thin rod along z about its centre: I = 1/12 m l^2",
            {lengthParam("length", "length")}, [](const Args& a) { return Rod{a.number("length")}; });

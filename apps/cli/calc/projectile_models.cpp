@@ -119,7 +119,8 @@ Result magnus(const Args& a) {
   const double speed = a.number("speed");
   const double radius = a.number("radius");
   const double rho = a.number("air-density");
-  const double w = a.number("spin-rpm") * rpm;
+  // In rev/min and under its own name: the library would see rad/s and name spinRate.
+  const double w = requireFinite(a.number("spin-rpm"), "spin-rpm") * rpm;
   requirePositive(speed, "speed");
   const double weight = requirePositive(a.number("mass"), "mass") * requirePositive(a.number("gravity"), "gravity");
   const Vec3d v{speed, 0.0, 0.0};
@@ -183,6 +184,10 @@ Result ballFlight(const Args& a) {
   // The shot goes along +x with y up, so +z is to the shooter's right. Backspin is +z spin;
   // spin about +y (counterclockwise seen from above) curves the ball left, so a positive
   // (rightward) sidespin is -y.
+  // Checked under the parameters' names: the library would name spin.y, spin.z, wind.x, wind.z.
+  for (const char* name : {"sidespin-rpm", "backspin-rpm", "tail-wind", "cross-wind", "launch-height"}) {
+    requireFinite(a.number(name), name);
+  }
   c.spin = Vec3d{0.0, -a.number("sidespin-rpm"), a.number("backspin-rpm")} * rpm;
   c.wind = {a.number("tail-wind"), 0.0, a.number("cross-wind")};
   const double speed = a.number("speed");
