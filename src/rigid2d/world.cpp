@@ -352,11 +352,11 @@ BodyId World::createBody(const BodyDef& def) {
   requireNonNegative(def.linearDamping, "linearDamping");
   requireNonNegative(def.angularDamping, "angularDamping");
   requireFinite(def.gravityScale, "gravityScale");
-  Impl& w = *impl_;
   // A cast integer would otherwise be treated as no known type: neither moved nor solved.
   if (def.type != BodyType::staticBody && def.type != BodyType::kinematicBody && def.type != BodyType::dynamicBody) {
     throwInvalid("type", static_cast<int>(def.type), "must be BodyType::staticBody, kinematicBody or dynamicBody");
   }
+  Impl& w = *impl_;
   const BodyId id = w.bodyIds.allocateId<BodyTag>();
   if (w.bodies.size() <= id.index) {
     w.bodies.resize(id.index + 1);
@@ -483,7 +483,6 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& poly
   if (polygon.count < 3 || polygon.count > maxPolygonVertices) {
     throwInvalid("polygon.count", polygon.count, "build polygons with makePolygon or makeBox");
   }
-  return addShape(*impl_, body, def, polygon);
   // Polygon is a plain struct: one filled in by hand (or corrupted) would otherwise reach the
   // broadphase and the narrowphase with NaN bounds or normals of no direction.
   for (std::size_t i = 0; i < static_cast<std::size_t>(polygon.count); ++i) {
@@ -496,6 +495,7 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& poly
   }
   requireFinite(polygon.centroid, "polygon.centroid");
   requireNonNegative(polygon.radius, "polygon.radius");
+  return addShape(*impl_, body, def, polygon);
 }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segment) {
   requireFinite(segment.point1, "point1");
@@ -561,17 +561,17 @@ void World::setTransform(BodyId id, const Vec2f& position, float angle) {
 }
 void World::setLinearVelocity(BodyId id, const Vec2f& v) {
   Body& b = impl_->body(id);
-  if (b.type != BodyType::staticBody) {
   // Checked before the body's type: a NaN is a caller's bug even where the value is ignored.
   requireFinite(v, "linearVelocity");
+  if (b.type != BodyType::staticBody) {
     b.linearVelocity = v;
     b.wake();
   }
 }
 void World::setAngularVelocity(BodyId id, float av) {
   Body& b = impl_->body(id);
-  if (b.type != BodyType::staticBody && !b.fixedRotation) {
   requireFinite(av, "angularVelocity");
+  if (b.type != BodyType::staticBody && !b.fixedRotation) {
     b.angularVelocity = av;
     b.wake();
   }
