@@ -611,3 +611,30 @@ TEST(ParticleWorld, drag_too_strong_for_the_step_stops_a_particle_instead_of_fli
 
 } // namespace
 } // namespace impetus::particles
+
+namespace impetus {
+namespace {
+
+TEST(ParticleWorld, state_hash_is_the_same_run_after_run_and_sees_one_bit) {
+  const auto run = [](float nudge) {
+    ParticleWorldSettings settings;
+    settings.dragCoefficient = 0.47f;
+    settings.wind = {3.0f, 0.0f, 0.0f};
+    ParticleWorld world(settings);
+    for (int i = 0; i < 50; ++i) {
+      ParticleDef def;
+      def.position = {0.1f * static_cast<float>(i), 2.0f, 0.0f};
+      def.velocity = {0.0f, i == 7 ? nudge : 0.0f, 0.0f};
+      world.createParticle(def);
+    }
+    for (int step = 0; step < 60; ++step) {
+      world.step(1.0f / 60.0f);
+    }
+    return world.stateHash();
+  };
+  EXPECT_EQ(run(0.0f), run(0.0f));
+  EXPECT_NE(run(0.0f), run(std::nextafter(0.0f, 1.0f))); // the smallest float, once
+}
+
+} // namespace
+} // namespace impetus
