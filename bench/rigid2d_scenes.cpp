@@ -328,7 +328,7 @@ ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings&
   def.contactHertz = settings.contactHertz;
   def.simd = settings.simd;
   def.gravity = scene.gravity;
-  def.enableSleep = false; // the benchmark times the solver, not the sleeping
+  def.enableSleep = settings.enableSleep;
   ImpetusScene built{rigid2d::World(def), {}};
   built.bodies.reserve(scene.bodies.size());
   for (const SceneBody& b : scene.bodies) {

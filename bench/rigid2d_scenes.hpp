@@ -138,11 +138,14 @@ struct ImpetusScene {
   std::vector<rigid2d::BodyId> bodies;
 };
 /// Solver settings a benchmark run may change (the defaults are WorldDef's) and the task runner
-/// (optional, not owned) for the world's parallel loops.
+/// (optional, not owned) for the world's parallel loops. Sleeping is off unlike WorldDef's
+/// default: the benchmark times the solver, and a scene that falls asleep would cost almost
+/// nothing; the samples app switches it on to show sleeping in the same scenes.
 struct ImpetusSettings {
   int substeps = rigid2d::WorldDef{}.substeps;
   float contactHertz = rigid2d::WorldDef{}.contactHertz;
   rigid2d::SimdLevel simd = rigid2d::WorldDef{}.simd;
+  bool enableSleep = false;
   TaskRunner* runner = nullptr;
 };
 [[nodiscard]] ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings& settings = {});

@@ -10,22 +10,11 @@ namespace impetus::samples {
 
 void BenchSceneSample::buildScene(bench::Rigid2dScene scene) {
   scene_ = std::move(scene);
-  bench::ImpetusScene built = bench::buildImpetusScene(scene_);
+  bench::ImpetusSettings settings;
+  settings.enableSleep = sleep_;
+  bench::ImpetusScene built = bench::buildImpetusScene(scene_, settings);
   bodies_ = std::move(built.bodies);
   adoptWorld(std::move(built.world));
-  // The builder makes the scene's revolute joints in order in a fresh world, which hands out
-  // JointId {i, 1} for the i-th (the world has no call that lists its joints). Each guess is
-  // checked against the bodies it must join; a mismatch just leaves that joint undrawn.
-  for (std::size_t i = 0; i < scene_.joints.size(); ++i) {
-    const bench::SceneJoint& j = scene_.joints[i];
-    const rigid2d::JointId id{static_cast<std::uint32_t>(i), 1};
-    if (!world().isValid(id) || world().jointBodyA(id) != bodies_[j.bodyA] ||
-        world().jointBodyB(id) != bodies_[j.bodyB]) {
-      continue;
-    }
-    // Scene bodies start unrotated, so a local anchor is the world anchor minus the origin.
-    recordJoint({id, j.anchor - scene_.bodies[j.bodyA].position, j.anchor - scene_.bodies[j.bodyB].position});
-  }
   view_ = fitView();
 }
 
@@ -57,7 +46,10 @@ CameraView BenchSceneSample::fitView() const {
   return {(lower + upper) * 0.5f, half.y * 1.15f + 0.5f, half.x * 1.1f + 0.5f};
 }
 
-void BenchSceneSample::sceneInfo() const {
+void BenchSceneSample::sceneControls() {
+  if (ImGui::Checkbox("sleeping", &sleep_)) {
+    setup();
+  }
   ImGui::Text("%zu bodies (%zu dynamic), %zu joints", scene_.bodies.size(), bench::dynamicBodyCount(scene_),
               scene_.joints.size());
 }

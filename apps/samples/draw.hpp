@@ -39,6 +39,8 @@ inline constexpr Color sensor{0.90f, 0.90f, 0.30f, 1.0f};
 inline constexpr Color joint{0.40f, 0.85f, 0.85f, 1.0f};
 inline constexpr Color contact{1.00f, 0.30f, 0.30f, 1.0f};
 inline constexpr Color normal{0.35f, 0.90f, 0.35f, 1.0f};
+inline constexpr Color contactForce{0.95f, 0.85f, 0.35f, 1.0f};  ///< along the contact normal
+inline constexpr Color frictionForce{0.95f, 0.50f, 0.85f, 1.0f}; ///< along the contact tangent
 inline constexpr Color aabb{0.80f, 0.40f, 0.80f, 1.0f};
 inline constexpr Color centerOfMass{0.95f, 0.95f, 0.95f, 1.0f};
 inline constexpr Color text{0.92f, 0.92f, 0.92f, 1.0f};

@@ -3,6 +3,8 @@
 #include <imgui.h>
 
 #include <array>
+#include <span>
+#include <vector>
 
 namespace impetus::samples {
 namespace {
@@ -13,18 +15,15 @@ AABB shapeBox(const ShapeGeometry& g, const Transform2f& xf) {
   return std::visit([&](const auto& shape) { return computeAABB(shape, xf); }, g);
 }
 
-void drawJoint(const World& world, DebugDraw& draw, const JointDrawInfo& info) {
-  if (!world.isValid(info.id)) {
-    return; // destroyed (or broken and removed) since it was recorded
-  }
-  const BodyId a = world.jointBodyA(info.id);
-  const BodyId b = world.jointBodyB(info.id);
+void drawJoint(const World& world, DebugDraw& draw, JointId joint) {
+  const BodyId a = world.jointBodyA(joint);
+  const BodyId b = world.jointBodyB(joint);
   const Transform2f xfA = world.transform(a);
   const Transform2f xfB = world.transform(b);
-  const Vec2f pA = transformPoint(xfA, info.localAnchorA);
-  const Vec2f pB = transformPoint(xfB, info.localAnchorB);
+  const Vec2f pA = world.jointAnchorA(joint);
+  const Vec2f pB = world.jointAnchorB(joint);
   const Color c = palette::joint;
-  switch (world.jointType(info.id)) {
+  switch (world.jointType(joint)) {
   case JointType::distance:
     draw.segment(pA, pB, c);
     draw.point(pA, 5.0f, c);
@@ -53,6 +52,39 @@ void drawJoint(const World& world, DebugDraw& draw, const JointDrawInfo& info) {
     }
     draw.point(pA, 5.0f, c);
     break;
+  }
+}
+
+/// The length of one solver substep of a step of `stepDt` seconds: the soft step solves its
+/// contacts `substeps` times a step, the book's response once.
+float substepOf(const World& world, float stepDt) {
+  const WorldDef& def = world.settings();
+  return def.solver == SolverKind::softStep ? stepDt / static_cast<float>(def.substeps) : stepDt;
+}
+
+void drawContacts(const World& world, DebugDraw& draw, const Rigid2dDrawOptions& options, float stepDt) {
+  std::vector<ContactData> contacts;
+  world.contacts(contacts);
+  const float normalLength = 16.0f * draw.pixelSize();
+  const float substep = substepOf(world, stepDt);
+  // Impulse (N s) over a substep is the force (N); the scale turns newtons into metres drawn.
+  const float metresPerImpulse = substep > 0.0f ? 1.0f / (substep * options.forceScale) : 0.0f;
+  for (const ContactData& c : contacts) {
+    const Manifold& m = c.manifold;
+    const Vec2f tangent{m.normal.y, -m.normal.x}; // the solver's friction direction
+    for (int i = 0; i < m.pointCount; ++i) {
+      const ManifoldPoint& p = m.points[static_cast<std::size_t>(i)];
+      if (options.contacts) {
+        draw.point(p.point, 5.0f, palette::contact);
+        draw.segment(p.point, p.point + m.normal * normalLength, palette::normal);
+      }
+      if (options.contactForces && p.normalImpulse != 0.0f) {
+        draw.segment(p.point, p.point + m.normal * (p.normalImpulse * metresPerImpulse), palette::contactForce);
+      }
+      if (options.frictionForces && p.tangentImpulse != 0.0f) {
+        draw.segment(p.point, p.point + tangent * (p.tangentImpulse * metresPerImpulse), palette::frictionForce);
+      }
+    }
   }
 }
 
@@ -95,8 +127,8 @@ void drawShape(DebugDraw& draw, const ShapeGeometry& geometry, const Transform2f
   }
 }
 
-void drawWorld(const World& world, DebugDraw& draw, const Rigid2dDrawOptions& options,
-               std::span<const JointDrawInfo> joints, const ContactTracker& contacts, const BodyColorFn& colorOf) {
+void drawWorld(const World& world, DebugDraw& draw, const Rigid2dDrawOptions& options, float stepDt,
+               const BodyColorFn& colorOf) {
   std::vector<BodyId> bodies;
   std::vector<ShapeId> shapes;
   world.bodyIds(bodies);
@@ -129,20 +161,14 @@ void drawWorld(const World& world, DebugDraw& draw, const Rigid2dDrawOptions& op
     }
   }
   if (options.joints) {
-    for (const JointDrawInfo& j : joints) {
-      drawJoint(world, draw, j);
+    std::vector<JointId> joints;
+    world.jointIds(joints);
+    for (const JointId joint : joints) {
+      drawJoint(world, draw, joint);
     }
   }
-  if (options.contacts) {
-    const float normalLength = 16.0f * draw.pixelSize();
-    contacts.forEach(world, [&](const ContactTracker::Pair& pair) {
-      const Manifold m = currentManifold(world, pair.shapeA, pair.shapeB);
-      for (int i = 0; i < m.pointCount; ++i) {
-        const ManifoldPoint& p = m.points[static_cast<std::size_t>(i)];
-        draw.point(p.point, 5.0f, palette::contact);
-        draw.segment(p.point, p.point + m.normal * normalLength, palette::normal);
-      }
-    });
+  if (options.contacts || options.contactForces || options.frictionForces) {
+    drawContacts(world, draw, options, stepDt);
   }
 }
 
@@ -156,6 +182,13 @@ void drawOptionsUi(Rigid2dDrawOptions& options) {
   ImGui::SameLine();
   ImGui::Checkbox("centres of mass", &options.centersOfMass);
   ImGui::Checkbox("body frames", &options.transforms);
+  ImGui::Checkbox("contact forces", &options.contactForces);
+  ImGui::SameLine();
+  ImGui::Checkbox("friction", &options.frictionForces);
+  if (options.contactForces || options.frictionForces) {
+    ImGui::SliderFloat("##forceScale", &options.forceScale, 1.0f, 1.0e5f, "force scale %.0f N per m",
+                       ImGuiSliderFlags_Logarithmic);
+  }
 }
 
 } // namespace impetus::samples

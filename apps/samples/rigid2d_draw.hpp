@@ -1,17 +1,16 @@
 // Draws a rigid2d::World through its public inspection API: shapes coloured by body type and
-// sleeping state, centres of mass, contact points and normals, joints and bounding boxes, each
-// switched on or off by Rigid2dDrawOptions.
+// sleeping state, centres of mass, contact points and normals, the contact forces the solver
+// applied, joints and bounding boxes, each switched on or off by Rigid2dDrawOptions. Everything
+// comes from the world itself (its contacts, joints and anchors), so a sample draws what it never
+// recorded: joints made by a builder, contacts of bodies it did not create.
 #pragma once
 
-#include "contact_tracker.hpp"
 #include "draw.hpp"
 
 #include <impetus/rigid2d/world.hpp>
 
 #include <functional>
 #include <optional>
-#include <span>
-#include <vector>
 
 namespace impetus::samples {
 
@@ -20,16 +19,13 @@ struct Rigid2dDrawOptions {
   bool joints = true;
   bool centersOfMass = false;
   bool contacts = false; ///< points and normals
-  bool aabbs = false;    ///< each shape's tight bounding box
+  /// Each contact point's normal force (the solver's normal impulse over a substep), as a segment
+  /// along the normal `forceScale` newtons per metre long.
+  bool contactForces = false;
+  bool frictionForces = false; ///< the same for the friction impulse, along the tangent
+  float forceScale = 100.0f;   ///< N per metre of drawn segment
+  bool aabbs = false;          ///< each shape's tight bounding box
   bool transforms = false;
-};
-
-/// What the drawing needs to know about a joint that the world does not say: its local anchors
-/// (the world lists neither its joints nor their anchors; samples record them on creation).
-struct JointDrawInfo {
-  rigid2d::JointId id;
-  Vec2f localAnchorA; ///< m, body A's frame
-  Vec2f localAnchorB; ///< m, body B's frame
 };
 
 /// A colour chosen by the sample for some bodies (a bullet, the player's craft); none: by type.
@@ -43,10 +39,12 @@ using BodyColorFn = std::function<std::optional<Color>(rigid2d::BodyId)>;
 void drawShape(DebugDraw& draw, const rigid2d::ShapeGeometry& geometry, const Transform2f& xf, const Color& fill,
                const Color& outline);
 
-void drawWorld(const rigid2d::World& world, DebugDraw& draw, const Rigid2dDrawOptions& options,
-               std::span<const JointDrawInfo> joints, const ContactTracker& contacts, const BodyColorFn& colorOf = {});
+/// `stepDt` is the length of the world's last step (s, 0 before the first): the solver's impulses
+/// are per substep, so they become forces by dividing by the substep it gives.
+void drawWorld(const rigid2d::World& world, DebugDraw& draw, const Rigid2dDrawOptions& options, float stepDt,
+               const BodyColorFn& colorOf = {});
 
-/// The Dear ImGui checkboxes for the options.
+/// The Dear ImGui checkboxes for the options (and the force scale's slider).
 void drawOptionsUi(Rigid2dDrawOptions& options);
 
 } // namespace impetus::samples

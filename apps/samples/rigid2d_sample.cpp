@@ -14,23 +14,22 @@ void Rigid2dSample::resetWorld(const WorldDef& def) { adoptWorld(World(def)); }
 
 void Rigid2dSample::adoptWorld(World&& world) {
   world_ = std::move(world);
-  joints_.clear();
-  contacts_.clear();
   drag_.reset();
   time_ = 0.0f;
+  lastDt_ = 0.0f;
 }
 
 void Rigid2dSample::step(float dt) {
   beforeStep(dt);
   world_.step(dt);
-  contacts_.update(world_);
   time_ += dt;
+  lastDt_ = dt;
   afterStep(dt);
 }
 
 void Rigid2dSample::draw(DebugDraw& draw) {
   BodyColorFn colorOf = [this](BodyId body) { return bodyColorOf(body); };
-  drawWorld(world_, draw, drawOptions_, joints_, contacts_, colorOf);
+  drawWorld(world_, draw, drawOptions_, lastDt_, colorOf);
   if (drag_ && world_.isValid(drag_->joint)) {
     const Transform2f xf = world_.transform(drag_->body);
     draw.segment(transformPoint(xf, drag_->localAnchor), drag_->target, palette::joint);
@@ -103,7 +102,7 @@ bool Rigid2dSample::mouseDown(const Vec2f& p, MouseButton button) {
     def.hertz = 5.0f;
     def.dampingRatio = 0.7f;
     def.maxForce = 1000.0f * world_.mass(body) * g;
-    drag_ = Drag{createJoint(def), body, def.localAnchorB, p};
+    drag_ = Drag{world_.createJoint(def), body, def.localAnchorB, p};
     world_.setAwake(body, true);
     return true;
   }
@@ -124,7 +123,6 @@ void Rigid2dSample::mouseUp(const Vec2f& /*p*/, MouseButton button) {
   if (world_.isValid(drag_->joint)) {
     world_.destroyJoint(drag_->joint);
   }
-  std::erase_if(joints_, [&](const JointDrawInfo& j) { return j.id == drag_->joint; });
   drag_.reset();
 }
 

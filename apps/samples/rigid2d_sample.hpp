@@ -1,10 +1,9 @@
-// The base of every sample on the 2D rigid-body world: it owns the World, steps it, follows its
-// contacts, draws it (with the debug-draw switches in the panel), lets the mouse drag a dynamic
-// body through a mouse joint (a soft spring of at most 1000 m g: the body follows the pointer
-// but cannot be yanked through walls), and checks that the state stays finite.
+// The base of every sample on the 2D rigid-body world: it owns the World, steps it, draws it
+// (with the debug-draw switches in the panel), lets the mouse drag a dynamic body through a mouse
+// joint (a soft spring of at most 1000 m g: the body follows the pointer but cannot be yanked
+// through walls), and checks that the state stays finite.
 #pragma once
 
-#include "contact_tracker.hpp"
 #include "plot.hpp"
 #include "rigid2d_draw.hpp"
 #include "sample.hpp"
@@ -33,21 +32,10 @@ public:
 protected:
   [[nodiscard]] rigid2d::World& world() noexcept { return world_; }
   [[nodiscard]] const rigid2d::World& world() const noexcept { return world_; }
-  /// Starts over with an empty world (joints, contacts, drag, time and plots forgotten).
+  /// Starts over with an empty world (drag and time forgotten).
   void resetWorld(const rigid2d::WorldDef& def);
   /// Starts over with a world built elsewhere (the benchmark scenes' builder).
   void adoptWorld(rigid2d::World&& world);
-
-  /// Creates a joint and remembers its anchors for drawing.
-  template <typename Def> rigid2d::JointId createJoint(const Def& def) {
-    const rigid2d::JointId id = world_.createJoint(def);
-    joints_.push_back({id, def.localAnchorA, def.localAnchorB});
-    return id;
-  }
-  /// The joints made through createJoint or recordJoint (the mouse's included), in order.
-  [[nodiscard]] const std::vector<JointDrawInfo>& recordedJoints() const noexcept { return joints_; }
-  /// Remembers the anchors of a joint made elsewhere.
-  void recordJoint(const JointDrawInfo& info) { joints_.push_back(info); }
 
   /// Hooks around World::step: forces for the coming step, readouts after it.
   virtual void beforeStep(float /*dt*/) {}
@@ -76,10 +64,9 @@ private:
   };
 
   rigid2d::World world_;
-  std::vector<JointDrawInfo> joints_;
-  ContactTracker contacts_;
   std::optional<Drag> drag_;
   float time_ = 0.0f;
+  float lastDt_ = 0.0f; ///< s, the last step's: turns the solver's impulses into drawn forces
   mutable std::vector<rigid2d::BodyId> bodyScratch_;
 };
 

@@ -7,7 +7,6 @@
 // keys drive the player's craft in both worlds at once; the crash repeats every 20 s.
 #include "sample.hpp"
 
-#include "contact_tracker.hpp"
 #include "plot.hpp"
 #include "rigid2d_draw.hpp"
 
@@ -61,7 +60,6 @@ struct Arena {
   World world;
   std::optional<Hovercraft> player;
   std::optional<Hovercraft> other;
-  ContactTracker contacts;
   History momentumHistory;
   History energyHistory;
   std::string report;
@@ -91,7 +89,6 @@ public:
       a.player->applyLoads(controls_, dt);
       a.other->applyLoads({}, dt);
       a.world.step(dt);
-      a.contacts.update(a.world);
       a.momentumHistory.push(length(a.momentum()));
       a.energyHistory.push(a.energy());
       if (a.report.empty() && !a.world.contactEvents().hits.empty()) {
@@ -131,7 +128,7 @@ public:
     for (std::size_t i = 0; i < arenas_.size(); ++i) {
       OffsetDraw shifted(draw, {separation * static_cast<float>(i), 0.0f});
       const Arena& a = *arenas_[i];
-      drawWorld(a.world, shifted, options, {}, a.contacts, [&](BodyId b) -> std::optional<Color> {
+      drawWorld(a.world, shifted, options, timeStep(), [&](BodyId b) -> std::optional<Color> {
         return b == a.player->body() ? palette::series[0] : palette::series[2];
       });
       for (const Hovercraft* craft : {&*a.player, &*a.other}) {

@@ -64,7 +64,7 @@ public:
       joint.upperTranslation = 0.25f;
       joint.enableMotor = true;
       joint.maxMotorTorque = torque_;
-      springs_[static_cast<std::size_t>(i)] = createJoint(joint);
+      springs_[static_cast<std::size_t>(i)] = world().createJoint(joint);
       anchors_[static_cast<std::size_t>(i)] = offset;
     }
     speed_.clear();

@@ -44,7 +44,7 @@ public:
       joint.localAnchorA = previousAnchor;
       joint.localAnchorB = {-0.5f * plank, 0.125f};
       joint.frictionTorque = friction_;
-      createJoint(joint);
+      world().createJoint(joint);
       previous = body;
       previousAnchor = {0.5f * plank, 0.125f};
       planksIds_.push_back(body);
@@ -55,7 +55,7 @@ public:
     last.localAnchorA = previousAnchor;
     last.localAnchorB = {-x0, height};
     last.frictionTorque = friction_;
-    createJoint(last);
+    world().createJoint(last);
     // The load: a few boxes and balls dropped on the deck.
     for (int i = 0; i < loads_; ++i) {
       BodyDef def;
@@ -83,9 +83,10 @@ protected:
     const BodyId middle = planksIds_[planksIds_.size() / 2];
     sag_.push(postHeight_ - world().position(middle).y);
     float largest = 0.0f;
-    for (const JointDrawInfo& j : recordedJoints()) {
-      if (world().isValid(j.id) && world().jointType(j.id) == JointType::revolute) {
-        largest = std::max(largest, length(world().jointReactionForce(j.id)));
+    world().jointIds(joints_);
+    for (const JointId joint : joints_) {
+      if (world().jointType(joint) == JointType::revolute) { // not the mouse's
+        largest = std::max(largest, length(world().jointReactionForce(joint)));
       }
     }
     force_.push(largest);
@@ -114,6 +115,7 @@ private:
   float friction_ = 2.0f; // N m
   float postHeight_ = 6.0f;
   std::vector<BodyId> planksIds_;
+  std::vector<JointId> joints_; // scratch, reused every step
   History sag_;
   History force_;
 };

@@ -29,7 +29,7 @@ protected:
     if (ImGui::IsItemDeactivatedAfterEdit()) {
       setup();
     }
-    sceneInfo();
+    sceneControls();
     ImGui::TextWrapped("circles of radius 0.4 m, 1 m apart; they do not collide (one negative group)");
     gap_.plot("widest joint gap (mm)", "%.2f mm");
     energy_.plot("kinetic energy (J per m of depth)", "%.1f J");

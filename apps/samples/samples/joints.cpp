@@ -43,7 +43,7 @@ public:
     pin.enableMotor = true;
     pin.motorSpeed = motorSpeed_;
     pin.maxMotorTorque = 50.0f;
-    revolute_ = createJoint(pin);
+    revolute_ = world().createJoint(pin);
 
     // Prismatic: a piston sliding vertically between limits, its motor reversed at each end.
     piston_ = dynamicBody({-13.0f, 4.0f});
@@ -59,7 +59,7 @@ public:
     slider.enableMotor = true;
     slider.motorSpeed = 2.0f;
     slider.maxMotorForce = 200.0f;
-    prismatic_ = createJoint(slider);
+    prismatic_ = world().createJoint(slider);
 
     // Distance: a spring and a rope.
     springBox_ = dynamicBody({-7.0f, 5.0f});
@@ -73,7 +73,7 @@ public:
     spring.enableSpring = true;
     spring.hertz = springHertz_;
     spring.dampingRatio = 0.05f;
-    spring_ = createJoint(spring);
+    spring_ = world().createJoint(spring);
     const BodyId ball = dynamicBody({-1.0f, 9.0f});
     world().createShape(ball, {}, Circle{{}, 0.5f});
     DistanceJointDef rope;
@@ -85,7 +85,7 @@ public:
     rope.minLength = 0.0f;
     rope.maxLength = 4.0f;
     rope.enableSpring = true; // with hertz 0: no spring force, only the limits (slack rope)
-    createJoint(rope);
+    world().createJoint(rope);
 
     // Weld: a soft cantilever.
     BodyId previous = ground_;
@@ -101,7 +101,7 @@ public:
       weld.linearHertz = 0.0f;
       weld.angularHertz = 4.0f;
       weld.angularDampingRatio = 0.5f;
-      createJoint(weld);
+      world().createJoint(weld);
       previous = box;
       anchor = {0.5f, 0.0f};
     }
@@ -118,7 +118,7 @@ public:
     axle.enableMotor = true;
     axle.motorSpeed = 3.0f;
     axle.maxMotorTorque = 20.0f;
-    createJoint(axle);
+    world().createJoint(axle);
 
     // Motor: a box driven to a target that circles (set every step).
     follower_ = dynamicBody({17.0f, 5.0f});
@@ -129,7 +129,7 @@ public:
     motor.linearOffset = {17.0f, 5.0f};
     motor.maxForce = 200.0f;
     motor.maxTorque = 50.0f;
-    motorJoint_ = createJoint(motor);
+    motorJoint_ = world().createJoint(motor);
 
     angle_.clear();
     travel_.clear();

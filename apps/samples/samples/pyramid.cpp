@@ -41,7 +41,7 @@ protected:
     if (rebuild) {
       setup();
     }
-    sceneInfo();
+    sceneControls();
     ImGui::TextWrapped("boxes of %.1f m, density %.0f kg/m^2, friction %.1f, steps of 1/60 s",
                        2.0 * bench::pyramidBoxHalfSize, static_cast<double>(bench::sceneDensity),
                        static_cast<double>(bench::sceneFriction));

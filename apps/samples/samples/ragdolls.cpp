@@ -33,7 +33,7 @@ protected:
     if (rebuild) {
       setup();
     }
-    sceneInfo();
+    sceneControls();
     gap_.plot("widest joint gap (mm)", "%.2f mm");
     energy_.plot("kinetic energy (J per m of depth)", "%.1f J");
   }

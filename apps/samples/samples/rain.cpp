@@ -28,7 +28,7 @@ protected:
     if (ImGui::IsItemDeactivatedAfterEdit()) {
       setup();
     }
-    sceneInfo();
+    sceneControls();
     ImGui::TextWrapped("circles of radius %.2f m in %zu rows", static_cast<double>(bench::rainRadius), bench::rainRows);
     energy_.plot("kinetic energy (J per m of depth)", "%.1f J");
     contacts_.plot("touching contacts", "%.0f");

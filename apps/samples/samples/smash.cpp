@@ -58,7 +58,7 @@ protected:
     if (rebuild) {
       setup();
     }
-    sceneInfo();
+    sceneControls();
     ImGui::TextWrapped("the projectile moves %.2f m per 1/60 s step; the boxes are 0.2 m", speed_ / 60.0);
     speedHistory_.plot("projectile speed (m/s)", "%.1f m/s");
     momentum_.plot("total momentum (kg m/s per m of depth)", "%.1f kg m/s");

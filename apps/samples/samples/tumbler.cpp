@@ -50,7 +50,7 @@ protected:
     if (ImGui::SliderFloat("##speed", &speedDegrees_, -90.0f, 90.0f, "drum: %.0f deg/s")) {
       setDrumSpeed();
     }
-    sceneInfo();
+    sceneControls();
     energy_.plot("kinetic energy of the boxes (J per m of depth)", "%.1f J");
     height_.plot("mean height of the boxes above the drum's centre (m)", "%.2f m");
   }
