@@ -52,6 +52,8 @@ void TiltSprite::setState(const Vec2d& position, const Vec2d& velocity) {
   }
   position_ = position;
   velocity_ = velocity;
+  contact_[0] = position.x <= 0.0 ? 1 : (position.x >= hi.x ? 2 : 0);
+  contact_[1] = position.y <= 0.0 ? 1 : (position.y >= hi.y ? 2 : 0);
 }
 
 double TiltSprite::update(const Vec3d& readingG, double timestamp) {
@@ -114,11 +116,18 @@ void TiltSprite::step(const Vec3d& readingG, double dt) {
     double& p = axis == 0 ? position_.x : position_.y;
     double& v = axis == 0 ? velocity_.x : velocity_.y;
     const double top = axis == 0 ? hi.x : hi.y;
+    const bool low = p <= 0.0;
+    const bool high = p >= top;
     if (p < 0.0 || p > top) {
       p = p < 0.0 ? 0.0 : top;
       v = -s.restitution * v;
+    }
+    // A hit is an arrival: the step in which the sprite comes to an edge it was not resting on.
+    const int edge = low ? 1 : (high ? 2 : 0);
+    if (edge != 0 && edge != contact_[axis]) {
       ++edgeHits_;
     }
+    contact_[axis] = edge;
   }
 }
 

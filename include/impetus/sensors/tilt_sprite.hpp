@@ -57,7 +57,7 @@ public:
 
   [[nodiscard]] const Vec2d& position() const noexcept { return position_; }
   [[nodiscard]] const Vec2d& velocity() const noexcept { return velocity_; }
-  /// Edge hits so far (one per axis per step with contact).
+  /// Edge hits so far: arrivals at an edge (resting against one counts once).
   [[nodiscard]] int edgeHits() const noexcept { return edgeHits_; }
   [[nodiscard]] const TiltSpriteSettings& settings() const noexcept { return settings_; }
   /// The largest position the corner can reach: world - sprite.
@@ -75,6 +75,7 @@ private:
   Vec2d velocity_;
   std::optional<double> lastTime_;
   int edgeHits_ = 0;
+  int contact_[2] = {0, 0}; ///< per axis: 0 free, 1 at the low edge, 2 at the high edge
 };
 
 } // namespace impetus::sensors
