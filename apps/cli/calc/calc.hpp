@@ -100,6 +100,8 @@ void registerKineticsModels(Registry& registry);
 void registerImpactModels(Registry& registry);
 void registerProjectileModels(Registry& registry);
 void registerCannonModels(Registry& registry);
+void registerSensorsModels(Registry& registry);
+void registerDisplayModels(Registry& registry);
 void registerRelativityModels(Registry& registry);
 void registerIntegratorModels(Registry& registry);
 

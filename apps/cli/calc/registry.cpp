@@ -30,6 +30,8 @@ const Registry& registry() {
     registerImpactModels(r);
     registerProjectileModels(r);
     registerCannonModels(r);
+    registerSensorsModels(r);
+    registerDisplayModels(r);
     registerRelativityModels(r);
     registerIntegratorModels(r);
     return r;
