@@ -30,7 +30,12 @@ int main(int argc, char** argv) {
   demo->add_option("name", demoName, "demo name (default: the flagship demo)");
   demo->add_flag("--list", demoList, "list the demos");
   std::string demoOut;
-  demo->add_option("--out", demoOut, "directory to write the demo's CSV files to");
+  demo->add_option("--out", demoOut, "directory to write the demo's CSV files to (doppler: a .wav file or a directory)");
+  double demoSpeed = 0.0;
+  double demoFrequency = 0.0;
+  auto* demoSpeedOption = demo->add_option("--speed", demoSpeed, "doppler: the source's speed, m/s (default 30)");
+  auto* demoFrequencyOption =
+      demo->add_option("--frequency", demoFrequency, "doppler: the source's frequency, Hz (default 440)");
 
   auto* run = app.add_subcommand(
       "run", "simulate a scene file (particles or rigid2d): impetus run SCENE.json --steps N [--dt H] [--out FILE] "
@@ -66,6 +71,12 @@ int main(int argc, char** argv) {
     impetus::cli::DemoOptions options;
     if (!demoOut.empty()) {
       options.outDir = demoOut;
+    }
+    if (demoSpeedOption->count() > 0) {
+      options.speed = demoSpeed;
+    }
+    if (demoFrequencyOption->count() > 0) {
+      options.frequency = demoFrequency;
     }
     return impetus::cli::runDemo(demoName, demoList, options);
   }

@@ -104,5 +104,7 @@ void registerSensorsModels(Registry& registry);
 void registerDisplayModels(Registry& registry);
 void registerRelativityModels(Registry& registry);
 void registerIntegratorModels(Registry& registry);
+void registerGeoModels(Registry& registry);
+void registerAudioModels(Registry& registry);
 
 } // namespace impetus::cli

@@ -34,6 +34,8 @@ const Registry& registry() {
     registerDisplayModels(r);
     registerRelativityModels(r);
     registerIntegratorModels(r);
+    registerGeoModels(r);
+    registerAudioModels(r);
     return r;
   }();
   return instance;

@@ -32,6 +32,8 @@ const std::vector<Demo>& demos() {
        demoHovercraft},
       {"bumper-cars", "the book's ch. 10 collision: two hovercraft, e = 0.5, book impulse vs soft step",
        demoBumperCars},
+      {"doppler", "ch. 26: a source passing at --speed V with --frequency F, rendered by OpenAL Soft to a WAV",
+       demoDoppler},
   };
   return all;
 }
@@ -64,7 +66,8 @@ int runDemo(const std::string& name, bool list, const DemoOptions& options) {
     int status = 0;
     for (const Demo& d : demos()) {
       fmt::print("== {} ==\n", d.name);
-      status |= d.run(options);
+      const int result = d.run(options);
+      status |= result == demoUnavailable ? 0 : result;
       fmt::print("\n");
     }
     return status;

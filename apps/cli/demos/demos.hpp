@@ -11,9 +11,17 @@
 namespace impetus::cli {
 
 struct DemoOptions {
-  /// Where to write CSV files; none: print only.
+  /// Where to write CSV files; none: print only. (doppler: a .wav file, or a directory for
+  /// doppler.wav.)
   std::optional<std::filesystem::path> outDir;
+  /// doppler: the source's speed (m/s) and frequency (Hz); none: the demo's defaults.
+  std::optional<double> speed;
+  std::optional<double> frequency;
 };
+
+/// The exit status of a demo that needs an optional part Impetus was built without (e.g.
+/// impetus::audio): explicit runs fail with it, the run of every demo skips the demo.
+inline constexpr int demoUnavailable = 3;
 
 /// Writes `rows` under `header` (comma-separated column names) to outDir/fileName when an
 /// output directory was given, creating it; prints the path written. Numbers are written with
@@ -33,5 +41,6 @@ int demoExplosion(const DemoOptions& options);
 int demoMagnus(const DemoOptions& options);
 int demoHovercraft(const DemoOptions& options);
 int demoBumperCars(const DemoOptions& options);
+int demoDoppler(const DemoOptions& options);
 
 } // namespace impetus::cli
