@@ -13,6 +13,11 @@ TouchExplosions::TouchExplosions(const TouchExplosionSettings& settings)
   (void)KinematicExplosion(settings.explosion); // validates the burst settings now, not at the first touch
 }
 
+void TouchExplosions::setExplosion(const ExplosionSettings& explosion) {
+  (void)KinematicExplosion(explosion);
+  settings_.explosion = explosion;
+}
+
 std::size_t TouchExplosions::update(double time, std::span<const Vec2d> screenPoints) {
   const std::span<const TrackedTouch> touches = tracker_.update(time, screenPoints);
   std::size_t began = 0;

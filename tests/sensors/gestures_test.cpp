@@ -234,6 +234,27 @@ TEST(TouchExplosion, each_finger_that_touches_sets_off_one_burst_where_it_touche
   EXPECT_EQ(single.burstCount(), 2U);
 }
 
+TEST(TouchExplosion, new_explosion_settings_apply_to_the_bursts_that_follow) {
+  TouchExplosions demo({});
+  std::vector<Vec2d> one{{100.0, 100.0}};
+  demo.update(0.0, one);
+  ExplosionSettings slow = demo.settings().explosion;
+  slow.speed = 1.0;
+  slow.direction = 0.5;
+  slow.spread = 0.1;
+  demo.setExplosion(slow);
+  demo.update(0.1, {});
+  std::vector<Vec2d> two{{300.0, 100.0}};
+  demo.update(0.2, two);
+  ASSERT_EQ(demo.bursts().size(), 2U);
+  for (const ExplosionParticle& p : demo.bursts()[1].explosion.particles()) {
+    EXPECT_LE(length(p.velocity), 1.0 + 1e-12);
+    EXPECT_NEAR(std::atan2(p.velocity.y, p.velocity.x), 0.5, 0.1 + 1e-12);
+  }
+  slow.life = 0.0;
+  expectErrorField([&] { demo.setExplosion(slow); }, "life");
+}
+
 TEST(TouchExplosion, bad_settings_are_refused) {
   TouchExplosionSettings s;
   s.screen.pixelsPerMetre = 0.0;

@@ -58,6 +58,10 @@ public:
   /// burst; bursts whose particles are all dead are dropped. Returns how many began this frame.
   std::size_t update(double time, std::span<const Vec2d> screenPoints);
 
+  /// The settings of the bursts to come (a game's strength or direction control; origin and
+  /// seed are ignored). Throws impetus::Error as the explosion would.
+  void setExplosion(const ExplosionSettings& explosion);
+
   [[nodiscard]] const std::deque<TouchBurst>& bursts() const noexcept { return bursts_; }
   /// Particles alive at `time` over every burst.
   [[nodiscard]] std::size_t aliveParticles(double time) const noexcept;
