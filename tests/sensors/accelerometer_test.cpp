@@ -135,7 +135,7 @@ TEST(Accelerometer, clipped_peaks_are_bridged_closer_to_the_truth) {
     peak = std::max(peak, filled[i]);
   }
   EXPECT_NEAR(errClipped, 0.7, 0.01);
-  EXPECT_LT(errFilled, 0.25 * errClipped); // the flat tops become peaks
+  EXPECT_LT(errFilled, 0.03); // the flat tops (0.7 g short) become peaks: 0.012 g off at worst
   EXPECT_GT(peak, 2.8);
   // Unclipped samples are untouched.
   for (std::size_t i = 0; i < truth.size(); ++i) {
