@@ -31,8 +31,8 @@ StereoCamera camera(const Args& a) {
   StereoCamera c;
   c.interaxial = a.number("interaxial");
   c.convergence = a.number("convergence");
-  c.nearPlane = a.number("near");
-  c.farPlane = a.number("far");
+  c.nearPlane = requirePositive(a.number("near"), "near");
+  c.farPlane = requireFinite(a.number("far"), "far");
   c.verticalFov = degToRad(requireFinite(a.number("fov"), "fov"));
   c.aspect = a.number("aspect");
   validate(c);
@@ -88,8 +88,10 @@ Result separationModel(const Args& a) {
   Result r;
   r.add("plane_width", convergencePlaneWidth(convergence, hfov), "m", "W = 2 C tan(hfov/2)");
   r.add("interaxial", interaxialFromSeparation(a.number("separation"), convergence, hfov), "m", "e = separation W");
-  r.add("real_separation", a.number("eye-separation") / requirePositive(a.number("screen-width"), "screenWidth"), "",
-        "eyes / screen width: the most a scene should use (NVIDIA's real eye separation)");
+  r.add("real_separation",
+        requirePositive(a.number("eye-separation"), "eyeSeparation") /
+            requirePositive(a.number("screen-width"), "screenWidth"),
+        "", "eyes / screen width: the most a scene should use (NVIDIA's real eye separation)");
   return r;
 }
 

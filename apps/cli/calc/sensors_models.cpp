@@ -33,7 +33,7 @@ std::vector<double> numberList(const Args& a, const std::string& name) {
   std::istringstream in(text);
   std::vector<double> values;
   for (std::string token; in >> token;) {
-    values.push_back(parseNumber(name, token));
+    values.push_back(requireFinite(parseNumber(name, token), name));
   }
   return values;
 }
@@ -47,7 +47,8 @@ std::vector<Vec2d> pointList(const Args& a, const std::string& name) {
     if (comma == std::string::npos) {
       throw Error(name, "--" + name + ": '" + token + "' is not x,y");
     }
-    points.push_back({parseNumber(name, token.substr(0, comma)), parseNumber(name, token.substr(comma + 1))});
+    points.push_back({requireFinite(parseNumber(name, token.substr(0, comma)), name),
+                      requireFinite(parseNumber(name, token.substr(comma + 1)), name)});
   }
   return points;
 }
@@ -62,7 +63,8 @@ Result fourWire(const Args& a) {
   panel.xPlateOhms = a.number("x-plate-ohms");
   panel.referenceVolts = vref;
   const TouchPoint p =
-      readFourWire(panel, {a.number("voltage-x"), a.number("voltage-y"), a.number("z1"), a.number("z2")});
+      readFourWire(panel, {requireFinite(a.number("voltage-x"), "voltageX"),
+                           requireFinite(a.number("voltage-y"), "voltageY"), a.number("z1"), a.number("z2")});
   Result r;
   r.add("x", p.position.x, "m", "x = W V_x / V_ref, from the X- bar");
   r.add("y", p.position.y, "m", "y = H V_y / V_ref, from the Y- bar");
@@ -80,7 +82,8 @@ Result fiveWire(const Args& a) {
   panel.y = {requirePositive(a.number("height"), "height"), 0.0, vref};
   panel.pullupOhms = a.number("pullup-ohms");
   panel.referenceVolts = vref;
-  const TouchPoint p = readFiveWire(panel, {a.number("voltage-x"), a.number("voltage-y"), a.number("wiper")});
+  const TouchPoint p = readFiveWire(panel, {requireFinite(a.number("voltage-x"), "voltageX"),
+                                            requireFinite(a.number("voltage-y"), "voltageY"), a.number("wiper")});
   Result r;
   r.add("x", p.position.x, "m", "the wiper's voltage with the right corners driven");
   r.add("y", p.position.y, "m", "the wiper's voltage with the upper corners driven");
@@ -133,7 +136,7 @@ Result grid(const Args& a) {
   GridGeometry g;
   g.rows = rows;
   g.columns = columns;
-  g.pitchX = g.pitchY = a.number("pitch");
+  g.pitchX = g.pitchY = requirePositive(a.number("pitch"), "pitch");
   const std::vector<GridTouch> touches = findGridTouches(deltas, g, a.number("threshold"));
   Result r;
   r.add("touches", static_cast<double>(touches.size()), "", "blobs above the threshold, split at dips");
@@ -248,7 +251,11 @@ Result touchExplosion(const Args& a) {
   s.explosion.speed = a.number("speed");
   s.explosion.life = a.number("life");
   s.explosion.gravity = a.number("gravity");
-  s.multitouch = a.number("multitouch") != 0.0;
+  const double multitouch = a.number("multitouch");
+  if (multitouch != 0.0 && multitouch != 1.0) {
+    throwInvalid("multitouch", multitouch, "must be 0 or 1");
+  }
+  s.multitouch = multitouch == 1.0;
   TouchExplosions demo(s);
   Matrix origins;
   for (const TouchFrame& f : frames) {
@@ -295,7 +302,8 @@ Result tiltAngleModel(const Args& a) {
 }
 
 Result tiltModel(const Args& a) {
-  const Vec3d reading{a.number("ax"), a.number("ay"), a.number("az")};
+  const Vec3d reading{requireFinite(a.number("ax"), "ax"), requireFinite(a.number("ay"), "ay"),
+                      requireFinite(a.number("az"), "az")};
   const AccelConvention c = convention(a);
   const Tilt t = tiltFromGravity(reading, c);
   Result r;
@@ -309,7 +317,7 @@ Result tiltModel(const Args& a) {
 
 Result clipModel(const Args& a) {
   const double range = a.number("range");
-  const double v = clipReading(a.number("acceleration"), range);
+  const double v = clipReading(requireFinite(a.number("acceleration"), "acceleration"), range);
   Result r;
   r.add("reading", v, "g", "what the sensor reports");
   r.add("clipped", isClipped(v, range), "", "at the limit: the true value is at least this");
@@ -322,7 +330,7 @@ Result accelCalibration(const Args& a) {
   Result r;
   r.add("offset", c.offset, "g", "(r_up + r_down) / 2");
   r.add("scale", c.scale, "", "(r_up - r_down) / 2");
-  r.add("corrected", c.apply(a.number("raw")), "g", "(raw - offset) / scale");
+  r.add("corrected", c.apply(requireFinite(a.number("raw"), "raw")), "g", "(raw - offset) / scale");
   return r;
 }
 
@@ -356,7 +364,8 @@ Result filterModel(const Args& a) {
 
 Result spriteModel(const Args& a) {
   TiltSpriteSettings s;
-  s.worldSize = {a.number("world-width"), a.number("world-height")};
+  s.worldSize = {requirePositive(a.number("world-width"), "worldWidth"),
+                 requirePositive(a.number("world-height"), "worldHeight")};
   s.spriteSize = {a.number("sprite-size"), a.number("sprite-size")};
   s.gravity = a.number("gravity");
   s.staticFriction = a.number("static-friction");
@@ -367,7 +376,8 @@ Result spriteModel(const Args& a) {
   TiltSprite sprite(s);
   const double duration = requireNonNegative(a.number("duration"), "duration");
   const double dt = requirePositive(a.number("time-step"), "timeStep");
-  const Vec3d reading{a.number("ax"), a.number("ay"), a.number("az")};
+  const Vec3d reading{requireFinite(a.number("ax"), "ax"), requireFinite(a.number("ay"), "ay"),
+                      requireFinite(a.number("az"), "az")};
   const Vec2d start = sprite.position();
   const auto steps = static_cast<long>(std::ceil(duration / dt - 1e-9));
   if (steps > 10'000'000) {
@@ -480,7 +490,8 @@ Result bridgeModel(const Args& a) {
   r.add("output_ratio", ratio, "V/V", "quarter GF e/(4 + 2 GF e), half GF e/2, full GF e");
   r.add("output", ratio * vex, "V");
   r.add("resistance_change", gf * strain, "", "dR / R = GF e");
-  r.add("stress", a.number("youngs-modulus") * strain, "Pa", "sigma = E e (linear region)");
+  r.add("stress", requirePositive(a.number("youngs-modulus"), "youngsModulus") * strain, "Pa",
+        "sigma = E e (linear region)");
   return r;
 }
 
@@ -493,7 +504,7 @@ Result loadCellModel(const Args& a) {
   const double f = cell.force(a.number("output-volts"));
   Result r;
   r.add("force", f, "N", "capacity (V_out/V_ex - zero) / rated output");
-  r.add("mass", f / a.number("gravity"), "kg", "F / g");
+  r.add("mass", f / requirePositive(a.number("gravity"), "gravity"), "kg", "F / g");
   r.add("overloaded", cell.overloaded(f), "", "beyond the rated capacity");
   r.add("full_scale_output", cell.outputVolts(cell.capacity), "V");
   return r;
