@@ -7,6 +7,7 @@
 #include <impetus/audio/audio.hpp>
 #include <impetus/error.hpp>
 #include <impetus/math/scalar.hpp>
+#include <impetus/math/validate.hpp>
 
 #include <cmath>
 #include <string>
@@ -30,7 +31,8 @@ Result wave(const Args& a) {
   r.add("period", w.period(), "s", "T = 1 / f");
   r.add("angular_frequency", w.angularFrequency(), "rad/s", "w = 2 pi f");
   r.add("wavenumber", w.wavenumber(), "rad/m", "k = 2 pi / lambda");
-  r.add("pressure", w.pressure(a.number("x"), a.number("time")), "Pa", "A sin(k x - w t)");
+  r.add("pressure", w.pressure(requireFinite(a.number("x"), "x"), requireFinite(a.number("time"), "time")), "Pa",
+        "A sin(k x - w t)");
   r.notes.emplace_back("the book writes f = 1/lambda; f = c/lambda (and f = 1/T)");
   return r;
 }
