@@ -1,5 +1,6 @@
 #include <impetus/audio/reflection.hpp>
 #include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
 
 #include <cmath>
 #include <limits>
@@ -26,20 +27,12 @@ double reflectionCoefficient(double absorption) {
   return std::sqrt(1.0 - absorption);
 }
 
-namespace {
-void requireFinitePoint(const Vec3d& v, const char* field) {
-  if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))) {
-    throwInvalid(field, length(v), "must be finite");
-  }
-}
-} // namespace
-
 PlaneReflection reflectOffPlane(const Vec3d& source, const Vec3d& listener, const Vec3d& planePoint,
                                 const Vec3d& planeNormal, double coefficient, double speedOfSound) {
-  requireFinitePoint(source, "source");
-  requireFinitePoint(listener, "listener");
-  requireFinitePoint(planePoint, "planePoint");
-  requireFinitePoint(planeNormal, "planeNormal");
+  requireFinite(source, "source");
+  requireFinite(listener, "listener");
+  requireFinite(planePoint, "planePoint");
+  requireFinite(planeNormal, "planeNormal");
   requirePositive(speedOfSound, "speedOfSound");
   requireFinite(coefficient, "coefficient");
   if (coefficient < 0.0 || coefficient > 1.0) {

@@ -1,6 +1,7 @@
 #include <impetus/error.hpp>
 #include <impetus/geo/ellipsoid.hpp>
 #include <impetus/math/scalar.hpp>
+#include <impetus/math/validate.hpp>
 
 #include <cmath>
 
@@ -29,10 +30,8 @@ Vec3d geodeticToEcef(const GeodeticPosition& position, const Ellipsoid& ellipsoi
 
 GeodeticPosition ecefToGeodetic(const Vec3d& ecef, const Ellipsoid& ellipsoid) {
   requireValid(ellipsoid);
+  requireFinite(ecef, "ecef");
   const double r = length(ecef);
-  if (!std::isfinite(r)) {
-    throwInvalid("ecef", r, "must be a finite point");
-  }
   if (r < 1000.0) {
     throwInvalid("ecef", r, "is within 1 km of the Earth's centre: geodetic latitude undefined there");
   }

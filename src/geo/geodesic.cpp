@@ -2,6 +2,7 @@
 // does and convert azimuths to compass values.
 #include <impetus/error.hpp>
 #include <impetus/geo/geodesic.hpp>
+#include <impetus/math/validate.hpp>
 
 #include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/Geodesic.hpp>
@@ -60,10 +61,7 @@ Vec3d referenceGeodeticToEcef(const GeodeticPosition& position, const Ellipsoid&
 }
 
 GeodeticPosition referenceEcefToGeodetic(const Vec3d& ecef, const Ellipsoid& ellipsoid) {
-  const double r = length(ecef);
-  if (!std::isfinite(r)) {
-    throwInvalid("ecef", r, "must be a finite point");
-  }
+  requireFinite(ecef, "ecef");
   requireValid(ellipsoid);
   const GeographicLib::Geocentric geocentric(ellipsoid.equatorialRadius, ellipsoid.flattening);
   GeodeticPosition g;

@@ -1,5 +1,6 @@
 #include <impetus/error.hpp>
 #include <impetus/geo/trilateration.hpp>
+#include <impetus/math/validate.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -96,9 +97,7 @@ PseudorangeFix solve(std::span<const Vec3d> satellites, std::span<const double> 
   double scale = 1.0;
   for (std::size_t k = 0; k < count; ++k) {
     const Vec3d& s = satellites[k];
-    if (!(std::isfinite(s.x) && std::isfinite(s.y) && std::isfinite(s.z))) {
-      throwInvalid("satellites", static_cast<double>(k), "satellite position must be finite (index given)");
-    }
+    requireFinite(s, "satellites");
     requireFinite(pseudoranges[k], "pseudoranges");
     scale = std::max({scale, length(s), std::abs(pseudoranges[k])});
   }
@@ -233,9 +232,7 @@ PseudorangeFix solve(std::span<const Vec3d> satellites, std::span<const double> 
 
 Vec2d trilaterate(const std::array<Vec2d, 3>& centres, const std::array<double, 3>& ranges) {
   for (const Vec2d& c : centres) {
-    if (!(std::isfinite(c.x) && std::isfinite(c.y))) {
-      throwInvalid("centres", std::isfinite(c.x) ? c.y : c.x, "must be finite");
-    }
+    requireFinite(c, "centres");
   }
   requireRanges(ranges);
   const Vec2d s21 = centres[1] - centres[0];
@@ -261,9 +258,7 @@ Vec2d trilaterate(const std::array<Vec2d, 3>& centres, const std::array<double, 
 
 std::array<Vec3d, 2> trilaterate(const std::array<Vec3d, 3>& centres, const std::array<double, 3>& ranges) {
   for (const Vec3d& c : centres) {
-    if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))) {
-      throwInvalid("centres", length(c), "must be finite");
-    }
+    requireFinite(c, "centres");
   }
   requireRanges(ranges);
   const Vec3d s21 = centres[1] - centres[0];

@@ -463,6 +463,22 @@ TEST(CliValidation, boundary_values_are_accepted) {
 
 /// A valid invocation of every model with required parameters (the others run on defaults).
 const std::map<std::string, std::vector<std::string>> baselines = {
+    // GPS and geodesy, sound (docs/digital-physics.md's examples).
+    {"great-circle", {"--from", "40.71,-74.01", "--to", "51.51,-0.13"}},
+    {"destination", {"--from", "40.71,-74.01", "--bearing", "51", "--distance", "1000000"}},
+    {"cross-track", {"--start", "0,0", "--end", "0,40", "--point", "1,10"}},
+    {"rhumb-line", {"--from", "40.71,-74.01", "--to", "51.51,-0.13"}},
+    {"vincenty", {"--from", "40.71,-74.01", "--to", "51.51,-0.13"}},
+    {"geodesic", {"--from", "40.71,-74.01", "--to", "51.51,-0.13"}},
+    {"ecef", {"--position", "48.8584,2.2945"}},
+    {"geodetic", {"--ecef", "4200958.827,168324.024,4780239.4"}},
+    {"trilaterate", {"--centres", "0,0,0 10,0,0 4,8,0", "--ranges", "7.0711 9.4868 6.4807"}},
+    {"gps-fix",
+     {"--dimensions", "2", "--satellites", "0,0 10,0 4,8", "--pseudoranges", "5.5 8.5622577483 4.6231056256",
+      "--speed-of-light", "1"}},
+    {"distance-gain", {"--distance", "20"}},
+    {"echo", {"--distance", "171.65"}},
+    {"reflection", {"--source", "0,2,0", "--listener", "4,2,0"}},
     {"inertia-solid-sphere", {"--mass", "2", "--radius", "0.5"}},
     {"inertia-spherical-shell", {"--mass", "2", "--radius", "0.5"}},
     {"inertia-hollow-sphere", {"--mass", "1", "--inner-radius", "1", "--outer-radius", "2"}},
@@ -573,8 +589,9 @@ TEST(CliValidation, every_calc_parameter_refuses_nan_and_infinity) {
         continue;
       }
       const std::string valid = given != base.end() ? *(given + 1) : fallback;
-      // A vector parameter ("x,y,z") gets the bad value in its first component.
-      const bool vector = valid.find(',') != std::string::npos;
+      // A vector ("x,y,z") or a list ("a b c", "x,y x,y") gets the bad value in its first number.
+      const std::size_t firstEnd = valid.find_first_of(", ");
+      const bool vector = firstEnd != std::string::npos;
       for (const std::string bad : {"nan", "inf", "-inf"}) {
         std::vector<std::string> args{"calc", name};
         for (std::size_t i = 0; i < base.size(); i += 2) {
@@ -584,7 +601,7 @@ TEST(CliValidation, every_calc_parameter_refuses_nan_and_infinity) {
           }
         }
         args.push_back("--" + param);
-        args.push_back(vector ? bad + valid.substr(valid.find(',')) : bad);
+        args.push_back(vector ? bad + valid.substr(firstEnd) : bad);
         SCOPED_TRACE(name + " --" + param + " " + args.back());
         const CliRun run = impetus(args);
         ++probed;

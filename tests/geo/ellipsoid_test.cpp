@@ -42,7 +42,7 @@ TEST(Ellipsoid, bad_input_is_rejected) {
   expectErrorField([] { (void)geodeticToEcef({{100.0, 0.0}, 0.0}); }, "position.latitude");
   expectErrorField([] { (void)geodeticToEcef({{0.0, 0.0}, NAN}); }, "position.height");
   expectErrorField([] { (void)ecefToGeodetic({1.0, 2.0, 3.0}); }, "ecef");
-  expectErrorField([] { (void)ecefToGeodetic({NAN, 2.0, 3.0}); }, "ecef");
+  expectErrorField([] { (void)ecefToGeodetic({NAN, 2.0, 3.0}); }, "ecef.x"); // the component at fault
   expectErrorField([] { (void)ecefToGeodetic({7e6, 0.0, 0.0}, Ellipsoid{6e6, -0.1}); }, "ellipsoid.flattening");
 }
 

@@ -8,6 +8,7 @@
 #include <impetus/core/constants.hpp>
 #include <impetus/error.hpp>
 #include <impetus/geo/geo.hpp>
+#include <impetus/math/validate.hpp>
 #if IMPETUS_HAVE_GEO
 #include <impetus/geo/geodesic.hpp>
 #endif
@@ -121,7 +122,11 @@ Result rhumb(const Args& a) {
   return r;
 }
 
-Ellipsoid ellipsoidArgs(const Args& a) { return {a.number("equatorial-radius"), a.number("flattening")}; }
+// Checked here under the parameters' own names (the library names them ellipsoid.*).
+Ellipsoid ellipsoidArgs(const Args& a) {
+  return {requireFinite(a.number("equatorial-radius"), "equatorialRadius"),
+          requireFinite(a.number("flattening"), "flattening")};
+}
 
 std::vector<Param> ellipsoidParams() {
   return {{"equatorial-radius", "m", "ellipsoid's a (WGS 84)", std::string("6378137")},
@@ -174,7 +179,7 @@ Result geodesic(const Args& a) {
 
 Result ecef(const Args& a) {
   const LatLon p = latLon(a, "position");
-  const Vec3d x = geodeticToEcef({p, a.number("height")}, ellipsoidArgs(a));
+  const Vec3d x = geodeticToEcef({p, requireFinite(a.number("height"), "height")}, ellipsoidArgs(a));
   Result r;
   r.add("ecef", toVector(x), "m", "Earth-centred, Earth-fixed x, y, z");
   return r;
