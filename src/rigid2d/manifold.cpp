@@ -713,7 +713,10 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform2f& xfA, const
     const Vec2f v2 = a.vertices[static_cast<std::size_t>((face + 1) % a.count)];
     const Vec2f edge = v2 - v1;
     const float u = dot(c - v1, edge);
-    if (faceSeparation > 0.0f && (u < 0.0f || u > dot(edge, edge))) {
+    // On or outside the face's plane and beyond one of its ends: the end vertex is the closest
+    // feature. (">= 0", not "> 0": a centre on a segment's or capsule core's line, beyond its
+    // end, has a face separation of exactly 0 and got a phantom contact at any distance.)
+    if (faceSeparation >= 0.0f && (u < 0.0f || u > dot(edge, edge))) {
       const Vec2f vertex = u < 0.0f ? v1 : v2;
       const Vec2f d = c - vertex;
       const float len = length(d);

@@ -137,7 +137,6 @@ D operator-(D a, D b) { return {a.x - b.x, a.y - b.y}; }
 D operator+(D a, D b) { return {a.x + b.x, a.y + b.y}; }
 D operator*(D a, double s) { return {a.x * s, a.y * s}; }
 double dot(D a, D b) { return a.x * b.x + a.y * b.y; }
-double cross(D a, D b) { return a.x * b.y - a.y * b.x; }
 double len(D a) { return std::hypot(a.x, a.y); }
 
 /// A shape's core (its vertices, world frame) and radius.
@@ -389,24 +388,6 @@ bool openCornerFinding(const Pair& p, const Core& ca, const Core& cb, double cor
   return best <= 0.1 * r2::linearSlop + p.tolerance || vertexVertex <= coreDistance + 1e-6 * p.scale;
 }
 
-/// The open finding on circles in line with a capsule or segment (see checkPair): true when
-/// IMPETUS_FUZZ_SKIP_OPEN asks to let it pass and the circle's centre is within 1e-6 of the scale
-/// of the line.
-bool openCircleOnAxis(const Pair& p) {
-  if (!impetus::fuzz::skipOpenFindings()) {
-    return false;
-  }
-  const bool aCircle = p.a.kind == Kind::circle;
-  const Shape& line = aCircle ? p.b : p.a;
-  if (line.polygon.count != 2 || (aCircle && p.b.kind == Kind::circle)) {
-    return false;
-  }
-  const Core k = core(line, aCircle ? p.xfB : p.xfA);
-  const D c = world(aCircle ? p.xfA : p.xfB, (aCircle ? p.a : p.b).circle.center);
-  const D axis = k.v[1] - k.v[0];
-  return std::abs(cross(axis, c - k.v[0])) / len(axis) <= 1e-6 * p.scale;
-}
-
 void checkPair(const Pair& p) {
   const Core ca = core(p.a, p.xfA);
   const Core cb = core(p.b, p.xfB);
@@ -426,13 +407,8 @@ void checkPair(const Pair& p) {
   }
 
   // A circle: one point exactly within reach, at the true signed distance.
-  // Open finding (regressions/narrowphase/open-circle-on-segment-axis*): a circle whose centre lies on
-  // the line of a capsule or segment, beyond its end, gets a contact at separation -(rA + rB)
-  // at any distance: collidePolygonAndCircle takes the end vertex's region only where the face
-  // separation is > 0, and on the line it is 0.
-  if ((p.a.kind == Kind::circle || p.b.kind == Kind::circle) && openCircleOnAxis(p)) {
-    return;
-  }
+  // (regressions/narrowphase/circle-on-segment-axis*: a circle on a capsule's or segment's line,
+  // beyond its end, once got a contact at any distance.)
   if (p.a.kind == Kind::circle || p.b.kind == Kind::circle) {
     const bool reach = signedDistance <= r2::speculativeDistance;
     if (std::abs(signedDistance - r2::speculativeDistance) > tol) {
