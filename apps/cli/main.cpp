@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
   demo->add_option("name", demoName, "demo name (default: the flagship demo)");
   demo->add_flag("--list", demoList, "list the demos");
   std::string demoOut;
-  demo->add_option("--out", demoOut, "directory to write the demo's CSV files to (doppler: a .wav file or a directory)");
+  demo->add_option("--out", demoOut,
+                   "directory to write the demo's CSV files to (doppler: a .wav file or a directory)");
   double demoSpeed = 0.0;
   double demoFrequency = 0.0;
   auto* demoSpeedOption = demo->add_option("--speed", demoSpeed, "doppler: the source's speed, m/s (default 30)");

@@ -6,6 +6,6 @@
 #include <impetus/core/mass_properties.hpp>
 #include <impetus/core/mesh_mass.hpp>
 #include <impetus/core/polygon_mass.hpp>
-#include <impetus/core/state_hash.hpp>
 #include <impetus/core/solid.hpp>
+#include <impetus/core/state_hash.hpp>
 #include <impetus/error.hpp>
