@@ -285,14 +285,8 @@ void World::jointIds(std::vector<JointId>& out) const {
     }
   }
 }
-Vec2f World::jointAnchorA(JointId id) const {
-  const Joint& j = impl_->joint(id);
-  return transformPoint(impl_->bodies[j.bodyA].transform, j.localAnchorA);
-}
-Vec2f World::jointAnchorB(JointId id) const {
-  const Joint& j = impl_->joint(id);
-  return transformPoint(impl_->bodies[j.bodyB].transform, j.localAnchorB);
-}
+Vec2f World::jointAnchorA(JointId id) const { return worldAnchors(*impl_, impl_->joint(id)).first; }
+Vec2f World::jointAnchorB(JointId id) const { return worldAnchors(*impl_, impl_->joint(id)).second; }
 BodyId World::jointBodyA(JointId id) const { return impl_->bodies[impl_->joint(id).bodyA].id; }
 BodyId World::jointBodyB(JointId id) const { return impl_->bodies[impl_->joint(id).bodyB].id; }
 Vec2f World::jointReactionForce(JointId id) const { return impl_->joint(id).reaction.force; }
