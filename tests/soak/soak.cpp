@@ -4,6 +4,7 @@
 // bodies destroyed and created while others sleep, rest and collide.
 //
 //   impetus-soak [--seconds S] [--seed N] [--episode-seconds T] [--threads K] [--joints on|off]
+//                [--first-episode N]   (start at episode N: a failure's reproduction)
 //
 // Each episode builds a world from (seed, episode) alone, so any failure is reproduced by its
 // seed and episode number. Checked after every step:
@@ -400,7 +401,7 @@ std::optional<Failure> check(Episode& e, EpisodeStats& stats) {
 int usage(const std::string& why) {
   std::fprintf(stderr,
                "impetus-soak: %s\nusage: impetus-soak [--seconds S] [--seed N] [--episode-seconds T] "
-               "[--threads K] [--joints on|off]\n",
+               "[--threads K] [--joints on|off] [--first-episode N]\n",
                why.c_str());
   return 2;
 }
@@ -413,6 +414,7 @@ int main(int argc, char** argv) {
   double episodeSeconds = 60.0;
   int threads = 1;
   bool joints = true;
+  long long firstEpisode = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (i + 1 >= argc) {
@@ -426,6 +428,8 @@ int main(int argc, char** argv) {
       seed = std::strtoull(value.c_str(), &end, 10);
     } else if (arg == "--episode-seconds") {
       episodeSeconds = std::strtod(value.c_str(), &end);
+    } else if (arg == "--first-episode") {
+      firstEpisode = std::strtoll(value.c_str(), &end, 10);
     } else if (arg == "--joints") {
       joints = value != "0" && value != "off";
       end = argv[i] + value.size();
@@ -438,14 +442,15 @@ int main(int argc, char** argv) {
       return usage(arg + " = " + value + ": not a number");
     }
   }
-  if (!(wallSeconds > 0.0) || !(episodeSeconds > 0.0) || threads < 1 || threads > 64) {
+  if (!(wallSeconds > 0.0) || !(episodeSeconds > 0.0) || threads < 1 || threads > 64 || firstEpisode < 0 ||
+      firstEpisode > 1000000000) {
     return usage("--seconds and --episode-seconds must be positive, --threads 1 to 64");
   }
   std::unique_ptr<ThreadPool> pool = threads > 1 ? std::make_unique<ThreadPool>(threads) : nullptr;
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   EpisodeStats total;
-  int episodes = 0;
+  int episodes = static_cast<int>(firstEpisode); // each episode is built from (seed, index) alone
   int closedEpisodes = 0;
   const auto stepsPerEpisode = static_cast<std::int64_t>(episodeSeconds / timeStep);
   while (elapsed() < wallSeconds) {
@@ -478,8 +483,8 @@ int main(int argc, char** argv) {
   std::printf("impetus-soak: seed %llu, %d episodes (%d closed) of %.0f s simulated, %lld steps, %zu bodies and "
               "%zu joints at the ends, %.0f s wall; every invariant held. Worst energy growth of a closed system: "
               "%.4f%% of its energy scale (bound 1%%).\n",
-              static_cast<unsigned long long>(seed), episodes, closedEpisodes, episodeSeconds,
-              static_cast<long long>(total.steps), total.bodies, total.joints, elapsed(),
+              static_cast<unsigned long long>(seed), episodes - static_cast<int>(firstEpisode), closedEpisodes,
+              episodeSeconds, static_cast<long long>(total.steps), total.bodies, total.joints, elapsed(),
               100.0 * total.worstEnergyGrowth);
   return 0;
 }
