@@ -160,4 +160,30 @@ std::vector<GestureEvent> GestureRecognizer::update(double time, std::span<const
   return events;
 }
 
+const char* gestureKindName(GestureKind kind) noexcept {
+  switch (kind) {
+  case GestureKind::tap:
+    return "tap";
+  case GestureKind::drag:
+    return "drag";
+  case GestureKind::pinch:
+    return "pinch";
+  case GestureKind::rotate:
+    return "rotate";
+  }
+  return "?";
+}
+
+const char* gesturePhaseName(GesturePhase phase) noexcept {
+  switch (phase) {
+  case GesturePhase::began:
+    return "began";
+  case GesturePhase::changed:
+    return "changed";
+  case GesturePhase::ended:
+    return "ended";
+  }
+  return "?";
+}
+
 } // namespace impetus::sensors

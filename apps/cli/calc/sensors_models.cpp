@@ -171,32 +171,6 @@ Result calibration(const Args& a) {
   return r;
 }
 
-const char* kindName(GestureKind k) {
-  switch (k) {
-  case GestureKind::tap:
-    return "tap";
-  case GestureKind::drag:
-    return "drag";
-  case GestureKind::pinch:
-    return "pinch";
-  case GestureKind::rotate:
-    return "rotate";
-  }
-  return "?";
-}
-
-const char* phaseName(GesturePhase p) {
-  switch (p) {
-  case GesturePhase::began:
-    return "began";
-  case GesturePhase::changed:
-    return "changed";
-  case GesturePhase::ended:
-    return "ended";
-  }
-  return "?";
-}
-
 Result gestures(const Args& a) {
   const std::vector<TouchFrame> frames = parseTouchRecording(a.text("recording"));
   TouchTracker tracker(a.number("max-jump"));
@@ -208,8 +182,8 @@ Result gestures(const Args& a) {
   for (const TouchFrame& f : frames) {
     for (const GestureEvent& e : recognizer.update(f.time, tracker.update(f.time, f.points))) {
       if (e.phase != GesturePhase::changed) {
-        log += fmt::format("{}{} {} t={:g} at ({:g}, {:g})", log.empty() ? "" : "; ", kindName(e.kind),
-                           phaseName(e.phase), e.time, e.position.x, e.position.y);
+        log += fmt::format("{}{} {} t={:g} at ({:g}, {:g})", log.empty() ? "" : "; ", gestureKindName(e.kind),
+                           gesturePhaseName(e.phase), e.time, e.position.x, e.position.y);
         if (e.kind == GestureKind::pinch) {
           log += fmt::format(" scale {:.4g}", e.scale);
         } else if (e.kind == GestureKind::rotate) {

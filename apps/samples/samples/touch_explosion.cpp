@@ -63,20 +63,6 @@ std::vector<Vec2d> scriptedTouches(double t) {
   return p;
 }
 
-const char* gestureName(GestureKind k) {
-  switch (k) {
-  case GestureKind::tap:
-    return "tap";
-  case GestureKind::drag:
-    return "drag";
-  case GestureKind::pinch:
-    return "pinch";
-  case GestureKind::rotate:
-    return "rotate";
-  }
-  return "?";
-}
-
 class TouchExplosionSample final : public Sample {
 public:
   void setup() override {
@@ -225,8 +211,7 @@ private:
     if (e.phase != GesturePhase::changed) {
       ++gestureCount_;
       char line[96];
-      std::snprintf(line, sizeof line, "t %.2f s: %s %s", t_, gestureName(e.kind),
-                    e.phase == GesturePhase::began ? "began" : "ended");
+      std::snprintf(line, sizeof line, "t %.2f s: %s %s", t_, gestureKindName(e.kind), gesturePhaseName(e.phase));
       log_.push_back(line);
       if (log_.size() > 6) {
         log_.pop_front();

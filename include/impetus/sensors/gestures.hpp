@@ -34,6 +34,10 @@ struct GestureSettings {
 enum class GestureKind { tap, drag, pinch, rotate };
 enum class GesturePhase { began, changed, ended };
 
+/// "tap", "drag", "pinch", "rotate"; "began", "changed", "ended" (for logs and tools).
+[[nodiscard]] const char* gestureKindName(GestureKind kind) noexcept;
+[[nodiscard]] const char* gesturePhaseName(GesturePhase phase) noexcept;
+
 struct GestureEvent {
   GestureKind kind = GestureKind::tap;
   GesturePhase phase = GesturePhase::ended; ///< a tap is reported once, as ended
