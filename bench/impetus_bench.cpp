@@ -185,6 +185,11 @@ int main(int argc, char** argv) {
                  "Impetus contact stiffness, Hz (capped at a quarter of the substep rate)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_option("--contact-reuse", settings.contactReuseDistance,
+                 "Impetus manifold reuse: a touching pair that moved less than this relative to itself keeps its "
+                 "manifold, carried with the bodies, m (0: collide every pair every step, as Box2D)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   std::string simd = "widest";
   app.add_option("--simd", simd,
                  "Impetus contact-solve lanes: the widest the CPU runs (AVX2: 8) or the baseline (SSE2: 4)")
@@ -255,6 +260,7 @@ int main(int argc, char** argv) {
         j["impetus_ms_per_step"] = ri->msPerStep;
         j["impetus_substeps"] = settings.substeps;
         j["impetus_contact_hertz"] = settings.contactHertz;
+        j["impetus_contact_reuse_m"] = settings.contactReuseDistance;
         j["impetus_simd"] = probe.contactSimd();
         j["impetus_contact_lanes"] = probe.contactLanes();
         if (!scene.tops.empty()) {

@@ -326,6 +326,7 @@ ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings&
   def.taskRunner = settings.runner;
   def.substeps = settings.substeps;
   def.contactHertz = settings.contactHertz;
+  def.contactReuseDistance = settings.contactReuseDistance;
   def.simd = settings.simd;
   def.gravity = scene.gravity;
   def.enableSleep = settings.enableSleep;

@@ -144,6 +144,7 @@ struct ImpetusScene {
 struct ImpetusSettings {
   int substeps = rigid2d::WorldDef{}.substeps;
   float contactHertz = rigid2d::WorldDef{}.contactHertz;
+  float contactReuseDistance = rigid2d::WorldDef{}.contactReuseDistance; ///< m; 0: collide every pair every step
   rigid2d::SimdLevel simd = rigid2d::WorldDef{}.simd;
   bool enableSleep = false;
   TaskRunner* runner = nullptr;

@@ -128,6 +128,7 @@ private:
     d.restitutionThreshold = f.nonNegative("restitution_threshold", d.restitutionThreshold);
     d.maxLinearSpeed = f.positive("max_linear_speed", d.maxLinearSpeed);
     d.hitEventThreshold = f.nonNegative("hit_event_threshold", d.hitEventThreshold);
+    d.contactReuseDistance = f.nonNegative("contact_reuse_distance", d.contactReuseDistance);
     d.enableSleep = f.boolean("enable_sleep", d.enableSleep);
     d.timeToSleep = f.nonNegative("time_to_sleep", d.timeToSleep);
     d.sleepLinearTolerance = f.nonNegative("sleep_linear_tolerance", d.sleepLinearTolerance);

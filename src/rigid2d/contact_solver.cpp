@@ -286,7 +286,7 @@ constexpr std::uint32_t prefetchDistance = 2;
   for (std::size_t i = 0; i < count; ++i) {
     if (slots[i] != noContact) {
       const auto* bytes = reinterpret_cast<const char*>(&w.contacts[slots[i]]);
-      for (std::size_t offset = 0; offset < sizeof(Contact); offset += 64) {
+      for (std::size_t offset = 0; offset < contactSolverBytes; offset += 64) {
         __builtin_prefetch(bytes + offset); // (a write hint needs PRFCHW: not baseline)
       }
     }

@@ -160,6 +160,14 @@ float rollingRadius(const Shape& s) {
   return 0.0f;
 }
 
+/// Polygons, segments and chain segments without rounding: every contact point is a corner or
+/// lies on a flat face, fixed in its body, so a manifold may be carried with the bodies. (A round
+/// surface's contact point is not fixed in its body: carried, it would turn with a rolling ball
+/// and push it on.)
+bool hasSharpCorners(const Shape& s) {
+  return !std::holds_alternative<Circle>(s.geometry) && s.collisionPolygon.radius == 0.0f;
+}
+
 void createContact(WorldState& w, std::uint64_t key) {
   std::uint32_t slot = 0;
   if (!w.freeContacts.empty()) {
@@ -183,6 +191,7 @@ void createContact(WorldState& w, std::uint64_t key) {
   c.rollingResistance =
       std::max(a.rollingResistance, b.rollingResistance) * std::max(rollingRadius(a), rollingRadius(b));
   c.sensor = a.sensor || b.sensor;
+  c.reusable = hasSharpCorners(a) && hasSharpCorners(b);
   c.alive = true;
   w.contactByPair.insert(key, slot);
 }
@@ -244,6 +253,8 @@ void updatePairs(WorldState& w) {
 /// own contact), then reports begin and end events in slot order.
 void collideContacts(WorldState& w) {
   w.touchChanges.assign(w.contacts.size(), 0);
+  const float reuseDistance = w.def.contactReuseDistance;
+  const float reuseTurnSine = std::sin(w.def.contactReuseAngle);
   w.parallelFor(static_cast<std::uint32_t>(w.contacts.size()), 64, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t slot = begin; slot < end; ++slot) {
       Contact& contact = w.contacts[slot];
@@ -255,9 +266,16 @@ void collideContacts(WorldState& w) {
       if (!bodyA.moving() && !bodyB.moving()) {
         continue; // nothing moved: the manifold stands
       }
+      if (reuseDistance > 0.0f && contact.reusable && contact.manifold.pointCount > 0 &&
+          carryManifold(contact, bodyA.transform, bodyB.transform, reuseDistance, reuseTurnSine)) {
+        continue; // the same features, points carried along: still touching, impulses kept
+      }
       const Manifold old = contact.manifold;
       contact.manifold = collide(w.shapes[contact.shapeA], bodyA.transform, w.shapes[contact.shapeB], bodyB.transform);
       const bool touching = contact.manifold.pointCount > 0;
+      if (touching) {
+        recordManifoldFrame(contact, bodyA.transform, bodyB.transform);
+      }
       const bool wasTouching = old.pointCount > 0;
       if (touching != wasTouching) {
         // Remember the old manifold's point count: the end event needs to know it touched.
@@ -325,6 +343,10 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
   requireNonNegative(def.jointHertz, "jointHertz");
   requireNonNegative(def.jointDampingRatio, "jointDampingRatio");
   requireNonNegative(def.hitEventThreshold, "hitEventThreshold");
+  requireNonNegative(def.contactReuseDistance, "contactReuseDistance");
+  if (!(def.contactReuseAngle >= 0.0f && def.contactReuseAngle < 1.0f)) {
+    throwInvalid("contactReuseAngle", def.contactReuseAngle, "must be at least 0 rad and under 1 rad");
+  }
   requireNonNegative(def.timeToSleep, "timeToSleep");
   requireNonNegative(def.sleepLinearTolerance, "sleepLinearTolerance");
   requireNonNegative(def.sleepAngularTolerance, "sleepAngularTolerance");

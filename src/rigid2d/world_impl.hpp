@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <variant>
@@ -91,6 +92,18 @@ struct Body {
   return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
 }
 
+/// A touching manifold as it was computed, fixed in the two bodies: each point's surface point
+/// on A (in A's frame) and on B (in B's frame), the separation and normal then, and the bodies'
+/// relative rotation then. While the bodies move less than the world's reuse tolerances
+/// relative to each other, the manifold is carried along with them instead of computed again
+/// (manifold_reuse.cpp).
+struct ManifoldFrame {
+  std::array<Vec2f, 2> localA{}, localB{};
+  std::array<float, 2> separation{};
+  Vec2f localNormal; ///< A's frame
+  Rot2f relativeRotation = Rot2f::identity();
+};
+
 /// A pair of shapes whose fat boxes overlap: touching when its manifold has points.
 struct Contact {
   std::uint32_t shapeA = 0; ///< the lower shape slot
@@ -107,9 +120,14 @@ struct Contact {
   /// event reports, unaffected by the order the points are solved in.
   std::array<float, 2> approachBefore{};
   int fastestPoint = 0;
-  bool sensor = false; ///< either shape is a sensor: events only, no response
+  bool sensor = false;   ///< either shape is a sensor: events only, no response
+  bool reusable = false; ///< both shapes have sharp corners: the manifold may be carried (manifold_reuse.cpp)
   bool alive = false;
+  ManifoldFrame frame; ///< cold: read by the collide pass only (after the solver's fields)
 };
+
+/// The bytes of a Contact the solver's passes read and write (the frame after them is not).
+inline constexpr std::size_t contactSolverBytes = offsetof(Contact, frame);
 
 /// The solver's per-body state for one step: velocities and the position and rotation deltas
 /// accumulated over the substeps (anchors stay fixed in the bodies, so separations follow from
@@ -274,6 +292,16 @@ struct StepContext {
 
 /// Frees a contact; one that touched reports its end to `events` (or `sensors`).
 void destroyContact(WorldState& w, std::uint32_t slot, ContactEvents& events, SensorEvents& sensors);
+
+/// Notes a freshly computed manifold's points in its bodies' frames (Contact::frame).
+void recordManifoldFrame(Contact& contact, const Transform2f& xfA, const Transform2f& xfB);
+/// Carries the contact's manifold along with its bodies when, since it was computed, each point's
+/// surfaces moved less than `maxDistance` (m) relative to each other and the bodies turned
+/// relative to each other by an angle whose sine is under `maxTurnSine`: new points, anchors,
+/// separations and normal, the same feature ids and impulses. False (manifold untouched)
+/// otherwise: collide again.
+[[nodiscard]] bool carryManifold(Contact& contact, const Transform2f& xfA, const Transform2f& xfB, float maxDistance,
+                                 float maxTurnSine);
 
 /// A shape's world bounding box.
 [[nodiscard]] AABB shapeBox(const Shape& s, const Transform2f& xf);

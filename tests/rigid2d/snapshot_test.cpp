@@ -93,8 +93,9 @@ TEST(Snapshot2D, is_compact_and_reuses_its_storage) {
   std::cout << "snapshot: " << snapshot.sizeBytes() << " bytes for " << bodies.size() << " bodies (" << perBody
             << " bytes per body, contacts and joints included)\n";
   // 57 bytes of motion and sleep per body, 16 per shape, and its share of the contacts (here about
-  // 2.5 per body, each about 150 bytes with its manifold and warm-start impulses).
-  EXPECT_LT(perBody, 600.0);
+  // 2.5 per body, each about 210 bytes with its manifold, warm-start impulses and the manifold's
+  // frame for reuse).
+  EXPECT_LT(perBody, 800.0);
   world.saveState(snapshot); // the same state again: the same bytes
   const std::size_t size = snapshot.sizeBytes();
   world.saveState(snapshot);
