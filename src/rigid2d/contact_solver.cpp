@@ -440,6 +440,7 @@ void applyRestitution(WorldState& w) {
 
 void storeImpulses(WorldState& w) {
   ContactSolverData& d = *w.contactSolver;
+  const float hitThreshold = w.def.hitEventThreshold;
   for (const ContactConstraint& c : d.overflow) {
     Contact& contact = w.contacts[c.contact];
     contact.rollingImpulse = c.rollingImpulse;
@@ -447,7 +448,7 @@ void storeImpulses(WorldState& w) {
       const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
       storePoint(contact, k, p.normalImpulse, p.tangentImpulse, p.maxNormalImpulse);
     }
-    w.maybeHit[c.contact] = contact.approachSpeed > 0.0f ? 1 : 0;
+    w.maybeHit[c.contact] = approachMayHit(contact.approachSpeed, hitThreshold) ? 1 : 0;
   }
   const int width = d.kernels->width;
   const auto batches = static_cast<std::uint32_t>(d.slots.size() / static_cast<std::size_t>(width));
@@ -472,7 +473,7 @@ void storeImpulses(WorldState& w) {
           const auto kk = static_cast<std::size_t>(k);
           storePoint(contact, k, impulses.normal[kk], impulses.tangent[kk], impulses.maxNormal[kk]);
         }
-        w.maybeHit[slot] = contact.approachSpeed > 0.0f ? 1 : 0;
+        w.maybeHit[slot] = approachMayHit(contact.approachSpeed, hitThreshold) ? 1 : 0;
       }
     }
   });

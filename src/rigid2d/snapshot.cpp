@@ -141,9 +141,9 @@ void World::saveState(WorldSnapshot& out) const {
       put.put(b.sleepTime);
     }
   }
-  for (const Shape& s : w.shapes) {
-    if (s.alive) {
-      put.put(s.fatBox);
+  for (std::size_t slot = 0; slot < w.shapes.size(); ++slot) {
+    if (w.shapes[slot].alive) {
+      put.put(w.fatBoxes[slot]);
     }
   }
   putList(put, w.moveBuffer);
@@ -190,11 +190,11 @@ void World::restoreState(const WorldSnapshot& snapshot) {
       b.sleepTime = in.get<float>();
     }
   }
-  for (Shape& s : w.shapes) {
-    if (s.alive) {
+  for (std::size_t slot = 0; slot < w.shapes.size(); ++slot) {
+    if (const Shape& s = w.shapes[slot]; s.alive) {
       const AABB fatBox = in.get<AABB>();
-      if (std::memcmp(&fatBox, &s.fatBox, sizeof(AABB)) != 0) {
-        s.fatBox = fatBox;
+      if (std::memcmp(&fatBox, &w.fatBoxes[slot], sizeof(AABB)) != 0) {
+        w.fatBoxes[slot] = fatBox;
         w.treeOf(s).moveProxy(s.proxy, fatBox);
       }
     }

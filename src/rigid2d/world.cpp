@@ -223,9 +223,9 @@ void updatePairs(WorldState& w) {
       w.newPairs.push_back(pairKey(slot, other));
       return true;
     };
-    w.movingTree.query(s.fatBox, visit);
+    w.movingTree.query(w.fatBoxes[slot], visit);
     if (!s.inStaticTree) {
-      w.staticTree.query(s.fatBox, visit);
+      w.staticTree.query(w.fatBoxes[slot], visit);
     }
   }
   w.moveBuffer.clear();
@@ -236,29 +236,26 @@ void updatePairs(WorldState& w) {
       createContact(w, key);
     }
   }
-  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
-    const Contact& c = w.contacts[slot];
-    if (c.alive && !overlaps(w.shapes[c.shapeA].fatBox, w.shapes[c.shapeB].fatBox)) {
-      if (c.manifold.pointCount > 0) {
-        // A support went away (teleported, say): what rested on it must fall.
-        w.bodies[c.bodyA].wake();
-        w.bodies[c.bodyB].wake();
-      }
-      detail::destroyContact(w, slot, w.contactEvents, w.sensorEvents);
-    }
-  }
 }
 
+/// What the collide pass found for a contact, in WorldState::touchChanges.
+enum TouchChange : std::uint8_t { unchanged = 0, began = 1, ended = 2, disjoint = 3 };
+
 /// Recomputes the manifolds of contacts with a moving body (in parallel: each writes only its
-/// own contact), then reports begin and end events in slot order.
+/// own contact), then, in slot order, ends the contacts whose fat boxes no longer overlap and
+/// reports begin and end events.
 void collideContacts(WorldState& w) {
-  w.touchChanges.assign(w.contacts.size(), 0);
+  w.touchChanges.assign(w.contacts.size(), unchanged);
   const float reuseDistance = w.def.contactReuseDistance;
   const float reuseTurnSine = std::sin(w.def.contactReuseAngle);
   w.parallelFor(static_cast<std::uint32_t>(w.contacts.size()), 64, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t slot = begin; slot < end; ++slot) {
       Contact& contact = w.contacts[slot];
       if (!contact.alive) {
+        continue;
+      }
+      if (!overlaps(w.fatBoxes[contact.shapeA], w.fatBoxes[contact.shapeB])) {
+        w.touchChanges[slot] = disjoint;
         continue;
       }
       const Body& bodyA = w.bodies[contact.bodyA];
@@ -279,7 +276,7 @@ void collideContacts(WorldState& w) {
       const bool wasTouching = old.pointCount > 0;
       if (touching != wasTouching) {
         // Remember the old manifold's point count: the end event needs to know it touched.
-        w.touchChanges[slot] = touching ? 1 : 2;
+        w.touchChanges[slot] = touching ? began : ended;
       }
       // Warm starting: a point with the same features as last step keeps its impulses.
       for (int i = 0; i < contact.manifold.pointCount; ++i) {
@@ -299,16 +296,25 @@ void collideContacts(WorldState& w) {
   });
   for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
     const std::uint8_t change = w.touchChanges[slot];
-    if (change == 0) {
+    if (change == unchanged) {
       continue;
     }
     const Contact& c = w.contacts[slot];
+    if (change == disjoint) {
+      if (c.manifold.pointCount > 0) {
+        // A support went away (teleported, say): what rested on it must fall.
+        w.bodies[c.bodyA].wake();
+        w.bodies[c.bodyB].wake();
+      }
+      detail::destroyContact(w, slot, w.contactEvents, w.sensorEvents);
+      continue;
+    }
     const Shape& a = w.shapes[c.shapeA];
     const Shape& b = w.shapes[c.shapeB];
     if (c.sensor) {
       const SensorEvent e = a.sensor ? SensorEvent{a.id, b.id} : SensorEvent{b.id, a.id};
-      (change == 1 ? w.sensorEvents.begins : w.sensorEvents.ends).push_back(e);
-    } else if (change == 1) {
+      (change == began ? w.sensorEvents.begins : w.sensorEvents.ends).push_back(e);
+    } else if (change == began) {
       w.contactEvents.begins.push_back({a.id, b.id});
     } else {
       w.contactEvents.ends.push_back({a.id, b.id});
@@ -320,9 +326,9 @@ void synchronizeShapes(WorldState& w, Body& b) {
   for (std::uint32_t slot : b.shapes) {
     Shape& s = w.shapes[slot];
     const AABB box = shapeBox(s, b.transform);
-    if (!contains(s.fatBox, box)) {
-      s.fatBox = enlarge(box, b.type == BodyType::staticBody ? 0.0f : aabbMargin);
-      w.treeOf(s).moveProxy(s.proxy, s.fatBox);
+    if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
+      fatBox = enlarge(box, b.type == BodyType::staticBody ? 0.0f : aabbMargin);
+      w.treeOf(s).moveProxy(s.proxy, fatBox);
       w.moveBuffer.push_back(slot);
     }
   }
@@ -453,6 +459,7 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
   const ShapeId id = w.shapeIds.allocateId<ShapeTag>();
   if (w.shapes.size() <= id.index) {
     w.shapes.resize(id.index + 1);
+    w.fatBoxes.resize(id.index + 1);
   }
   Shape& s = w.shapes[id.index];
   s = Shape{};
@@ -477,8 +484,8 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
   s.id = id;
   s.alive = true;
   s.inStaticTree = b.type == BodyType::staticBody;
-  s.fatBox = enlarge(shapeBox(s, b.transform), s.inStaticTree ? 0.0f : aabbMargin);
-  s.proxy = w.treeOf(s).createProxy(s.fatBox, id.index);
+  w.fatBoxes[id.index] = enlarge(shapeBox(s, b.transform), s.inStaticTree ? 0.0f : aabbMargin);
+  s.proxy = w.treeOf(s).createProxy(w.fatBoxes[id.index], id.index);
   w.moveBuffer.push_back(id.index);
   b.shapes.push_back(id.index);
   updateMass(w, b);
@@ -651,10 +658,8 @@ void World::step(float dt) {
       continue;
     }
     const Contact& contact = w.contacts[slot];
-    // A resting contact approaches at a few um/s of round-off: a hit needs a real approach.
-    constexpr float restingSpeed = 1e-3f; // m/s
-    if (contact.alive && !contact.sensor && contact.manifold.pointCount > 0 && contact.approachSpeed > restingSpeed &&
-        contact.approachSpeed >= w.def.hitEventThreshold &&
+    if (contact.alive && !contact.sensor && contact.manifold.pointCount > 0 &&
+        detail::approachMayHit(contact.approachSpeed, w.def.hitEventThreshold) &&
         (w.bodies[contact.bodyA].moving() || w.bodies[contact.bodyB].moving())) {
       const ManifoldPoint& p = contact.manifold.points[static_cast<std::size_t>(contact.fastestPoint)];
       w.contactEvents.hits.push_back({w.shapes[contact.shapeA].id, w.shapes[contact.shapeB].id, p.point,

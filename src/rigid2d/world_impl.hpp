@@ -48,8 +48,7 @@ struct Shape {
   bool sensor = false;
   std::uint64_t userData = 0;
   std::int32_t proxy = DynamicTree::nullNode;
-  bool inStaticTree = false; ///< which broadphase tree holds the proxy
-  AABB fatBox;
+  bool inStaticTree = false; ///< which broadphase tree holds the proxy (fat box: WorldState::fatBoxes)
   ShapeId id;
   bool alive = false;
 };
@@ -126,6 +125,15 @@ struct Contact {
   ManifoldFrame frame; ///< cold: read by the collide pass only (after the solver's fields)
 };
 
+/// A hit event needs an approach faster than this (and the world's hitEventThreshold): a resting
+/// contact approaches at a few um/s of round-off. m/s.
+inline constexpr float restingApproachSpeed = 1e-3f;
+
+/// Whether a contact's fastest approach this step may raise a hit event.
+[[nodiscard]] inline bool approachMayHit(float approachSpeed, float hitEventThreshold) noexcept {
+  return approachSpeed > restingApproachSpeed && approachSpeed >= hitEventThreshold;
+}
+
 /// The bytes of a Contact the solver's passes read and write (the frame after them is not).
 inline constexpr std::size_t contactSolverBytes = offsetof(Contact, frame);
 
@@ -192,6 +200,9 @@ struct WorldState {
   std::vector<Body> bodies; ///< by id slot
   IdPool shapeIds;
   std::vector<Shape> shapes; ///< by id slot
+  /// Each shape's fat box as its tree holds it, by shape slot: apart from the shapes because
+  /// every contact reads two of them every step.
+  std::vector<AABB> fatBoxes;
   /// Broadphase: static shapes apart from moving ones, so a static world is never re-queried
   /// against itself and continuous collision searches static shapes only.
   DynamicTree staticTree;
@@ -209,9 +220,9 @@ struct WorldState {
   std::vector<Joint> joints; ///< by id slot
   JointEvents jointEvents;
   float lastInverseH = 0.0f;              ///< the last step's substep rate, 1/s (impulses to forces)
-  std::vector<std::uint8_t> touchChanges; ///< scratch of the collide pass: 1 began, 2 ended touching
-  /// Scratch of the solve, per contact slot: 1 where the contact approached this step (a hit
-  /// event may be due), so the events need not read every contact again.
+  std::vector<std::uint8_t> touchChanges; ///< scratch of the collide pass (TouchChange)
+  /// Scratch of the solve, per contact slot: 1 where the contact approached fast enough this
+  /// step for a hit event (approachMayHit), so the events need not read every contact again.
   std::vector<std::uint8_t> maybeHit;
 
   /// This step's moving bodies in solver order, their solver state (plus, at staticIndex(), a
