@@ -100,59 +100,6 @@ int findColour(ContactSolverData& d, std::uint32_t a, std::uint32_t b, std::uint
   return std::countr_zero(bit);
 }
 
-/// Fills one constraint (or one lane) from its contact: anchors relative to the centres of mass,
-/// effective masses, and the approach speed before the step.
-ContactConstraint makeConstraint(const WorldState& w, Contact& contact, std::uint32_t slot,
-                                 const ContactSolverData& d) {
-  const SolverBodyInfo& a = w.bodyInfo[contact.bodyA];
-  const SolverBodyInfo& b = w.bodyInfo[contact.bodyB];
-  const Manifold& m = contact.manifold;
-  ContactConstraint c;
-  c.indexA = a.solverIndex;
-  c.indexB = b.solverIndex;
-  c.contact = slot;
-  c.mA = a.inverseMass;
-  c.iA = a.inverseInertia;
-  c.mB = b.inverseMass;
-  c.iB = b.inverseInertia;
-  c.normal = m.normal;
-  c.friction = contact.friction;
-  c.restitution = contact.restitution;
-  c.rollingResistance = contact.rollingResistance;
-  const float kRolling = c.iA + c.iB;
-  c.rollingMass = (c.rollingResistance > 0.0f && kRolling > 0.0f) ? 1.0f / kRolling : 0.0f;
-  c.rollingImpulse = contact.rollingImpulse;
-  c.softness = (c.mA == 0.0f || c.mB == 0.0f) ? d.staticSoft : d.soft;
-  c.pointCount = m.pointCount;
-  const Vec2f tangent{m.normal.y, -m.normal.x};
-  const Vec2f offsetA = a.centerOffset;
-  const Vec2f offsetB = b.centerOffset;
-  const BodyState& stA = w.states[c.indexA];
-  const BodyState& stB = w.states[c.indexB];
-  for (int k = 0; k < m.pointCount; ++k) {
-    const ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
-    ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-    p.rA = mp.anchorA - offsetA;
-    p.rB = mp.anchorB - offsetB;
-    p.adjustedSeparation = mp.separation - dot(p.rB - p.rA, m.normal);
-    p.normalImpulse = mp.normalImpulse;
-    p.tangentImpulse = mp.tangentImpulse;
-    const float rnA = cross(p.rA, m.normal);
-    const float rnB = cross(p.rB, m.normal);
-    const float kNormal = c.mA + c.mB + c.iA * rnA * rnA + c.iB * rnB * rnB;
-    p.normalMass = kNormal > 0.0f ? 1.0f / kNormal : 0.0f;
-    const float rtA = cross(p.rA, tangent);
-    const float rtB = cross(p.rB, tangent);
-    const float kTangent = c.mA + c.mB + c.iA * rtA * rtA + c.iB * rtB * rtB;
-    p.tangentMass = kTangent > 0.0f ? 1.0f / kTangent : 0.0f;
-    const Vec2f vA = stA.v + cross(stA.w, p.rA);
-    const Vec2f vB = stB.v + cross(stB.w, p.rB);
-    p.relativeVelocity = dot(vB - vA, m.normal);
-    contact.approachBefore[static_cast<std::size_t>(k)] = -p.relativeVelocity;
-  }
-  return c;
-}
-
 Vec2f velocityAt(const BodyState& s, const Vec2f& r) { return s.v + cross(s.w, r); }
 
 void applyImpulse(BodyState& a, BodyState& b, const ContactConstraint& c, const ConstraintPoint& p,
@@ -344,7 +291,7 @@ void prepareContacts(WorldState& w, const StepContext& context) {
     const bool withStatic = ia == staticIndex || ib == staticIndex;
     const int colour = findColour(d, ia, ib, staticIndex, withStatic ? allColours : dynamicColours);
     if (colour < 0) {
-      d.overflow.push_back(makeConstraint(w, contact, slot, d));
+      d.overflow.push_back(makeContactConstraint(w, contact, slot, d.soft, d.staticSoft));
     } else {
       d.colourContacts[static_cast<std::size_t>(colour)].push_back(slot);
     }
@@ -363,21 +310,17 @@ void prepareContacts(WorldState& w, const StepContext& context) {
     const std::vector<std::uint32_t>& list = d.colourContacts[colour];
     const std::uint32_t first = d.colourStart[colour];
     w.parallelFor(d.colourStart[colour + 1] - first, 64, [&](std::uint32_t begin, std::uint32_t end) {
-      std::array<ContactConstraint, maxWideLanes> lanes;
       for (std::uint32_t batch = begin; batch < end; ++batch) {
         const std::size_t k0 = std::size_t{batch} * width;
         const int count = static_cast<int>(std::min<std::size_t>(width, list.size() - k0));
         if (const std::size_t ahead = k0 + prefetchDistance * width; ahead < list.size()) {
           prefetchContacts(w, list.data() + ahead, std::min<std::size_t>(width, list.size() - ahead));
         }
+        std::uint32_t* slots = &d.slots[(std::size_t{first} + batch) * width];
         for (std::uint32_t i = 0; i < width; ++i) {
-          const std::uint32_t slot = static_cast<int>(i) < count ? list[k0 + i] : noContact;
-          d.slots[(std::size_t{first} + batch) * width + i] = slot;
-          if (slot != noContact) {
-            lanes[i] = makeConstraint(w, w.contacts[slot], slot, d);
-          }
+          slots[i] = static_cast<int>(i) < count ? list[k0 + i] : noContact;
         }
-        kernels.fill(d.batches(), first + batch, lanes.data(), count, staticIndex);
+        kernels.prepare(d.batches(), first + batch, w, slots, count, d.soft, d.staticSoft);
       }
     });
   }

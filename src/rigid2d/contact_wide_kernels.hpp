@@ -76,7 +76,7 @@ struct BodiesW {
 }
 
 /// Copies a constraint into lane i of a wide constraint.
-void setLane(ContactConstraintWide& wc, int i, const ContactConstraint& c) {
+[[gnu::always_inline]] inline void setLane(ContactConstraintWide& wc, int i, const ContactConstraint& c) {
   const auto li = static_cast<std::size_t>(i);
   wc.indexA[li] = c.indexA;
   wc.indexB[li] = c.indexB;
@@ -243,13 +243,19 @@ void restitutionWide(ContactConstraintWide& c, BodyState* states, std::uint32_t 
 
 ContactConstraintWide* batchesOf(void* batches) { return static_cast<ContactConstraintWide*>(batches); }
 
-void fillBatch(void* batches, std::uint32_t batch, const ContactConstraint* lanes, int count,
-               std::uint32_t staticIndex) {
+void prepareBatch(void* batches, std::uint32_t batch, WorldState& w, const std::uint32_t* slots, int count,
+                  const Softness& soft, const Softness& staticSoft) {
   ContactConstraintWide& wc = batchesOf(batches)[batch];
-  ContactConstraint none;
-  none.indexA = none.indexB = staticIndex;
-  for (int i = 0; i < simdWidth; ++i) {
-    setLane(wc, i, i < count ? lanes[i] : none);
+  for (int i = 0; i < count; ++i) {
+    const std::uint32_t slot = slots[i];
+    setLane(wc, i, makeContactConstraint(w, w.contacts[slot], slot, soft, staticSoft));
+  }
+  if (count < simdWidth) {
+    ContactConstraint none;
+    none.indexA = none.indexB = w.staticIndex();
+    for (int i = count; i < simdWidth; ++i) {
+      setLane(wc, i, none);
+    }
   }
 }
 
@@ -291,7 +297,7 @@ static_assert(simdWidth <= maxWideLanes);
 static_assert(alignof(ContactConstraintWide) <= wideAlignment);
 static_assert(sizeof(ContactConstraintWide) % alignof(ContactConstraintWide) == 0);
 
-constexpr WideKernels wideKernels{simdName,          simdWidth,     sizeof(ContactConstraintWide), &fillBatch,
+constexpr WideKernels wideKernels{simdName,          simdWidth,     sizeof(ContactConstraintWide), &prepareBatch,
                                   &warmStartBatches, &solveBatches, &restitutionBatches,           &readBatch};
 
 } // namespace
