@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
 
 namespace impetus::rigid2d {
 namespace {
@@ -71,6 +72,22 @@ CastOutput first(const CastOutput& a, const CastOutput& b) {
   return b.fraction < a.fraction ? b : a;
 }
 
+/// Polygon coordinates and rounding radii are bounded (maxPolygonCoordinate).
+void requireCoordinate(float value, const std::string& field) {
+  if (std::abs(value) > maxPolygonCoordinate) {
+    throwInvalid(field, value, "must be within 1e6 m of the body origin (maxPolygonCoordinate)");
+  }
+}
+
+/// A box half-extent: finite, at least linearSlop (a side of 2 linearSlop) and bounded.
+void requireBoxHalfExtent(float value, const char* field) {
+  requirePositive(value, field);
+  if (value < linearSlop) {
+    throwInvalid(field, value, "must be at least linearSlop (0.005 m): a thinner box loses corners");
+  }
+  requireCoordinate(value, field);
+}
+
 void requireRay(const RayCastInput& ray) {
   requireFinite(ray.origin, "origin");
   requireFinite(ray.translation, "translation");
@@ -85,68 +102,94 @@ std::span<const Vec2f> computeHull(std::span<const Vec2f> points, std::array<Vec
   if (points.size() < 3 || points.size() > static_cast<std::size_t>(maxPolygonVertices)) {
     throwInvalid("points.size", static_cast<double>(points.size()), "a polygon needs 3 to 8 points");
   }
-  // Weld points closer than the linear slop.
-  std::array<Vec2f, 8> unique{};
+  // Everything below is decided in double on the float inputs: within maxPolygonCoordinate the
+  // rounding of a difference, a distance or a cross product is below 1e-9 m, far inside the
+  // linearSlop margins the decisions use, so no rounding can make the hull wind or lose a corner.
+  std::array<Vec2d, 8> unique{};
   std::size_t n = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    requireFinite(points[i], "points[" + std::to_string(i) + "]");
+    const std::string field = "points[" + std::to_string(i) + "]";
+    requireFinite(points[i], field);
+    requireCoordinate(points[i].x, field + ".x");
+    requireCoordinate(points[i].y, field + ".y");
+    // Weld points closer than linearSlop to one already kept: contact could not tell them apart.
+    const Vec2d p{points[i].x, points[i].y};
     const bool duplicate = std::any_of(unique.begin(), unique.begin() + static_cast<std::ptrdiff_t>(n),
-                                       [&](const Vec2f& u) { return distance(u, points[i]) < linearSlop; });
+                                       [&](const Vec2d& u) { return distance(u, p) < linearSlop; });
     if (!duplicate) {
-      unique[n++] = points[i];
+      unique[n++] = p;
     }
   }
-  // Gift wrapping from the lowest-x (then lowest-y) point, counter-clockwise; on collinear
-  // candidates the farthest wins, so collinear points are skipped.
-  std::size_t start = 0;
+  // Andrew's monotone chain: sorted by x then y, the lower chain left to right and the upper one
+  // right to left, each popping what does not turn left. Both chains are monotone in x and each
+  // point enters a chain once, so the loop closes and cannot wind twice, whatever the orientation
+  // tests decide (the gift wrapping this replaces could, misjudging a point on an edge next to
+  // its start); their rounding can only leave a vertex a hair off its neighbours' line, which the
+  // removal below takes out. The loop starts at the lowest x (then lowest y), as before.
+  // Insertion sort: at most 8 points (std::sort trips a false -Warray-bounds in g++ 12 here).
+  const auto before = [](const Vec2d& a, const Vec2d& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
   for (std::size_t i = 1; i < n; ++i) {
-    if (unique[i].x < unique[start].x || (unique[i].x == unique[start].x && unique[i].y < unique[start].y)) {
-      start = i;
+    for (std::size_t j = i; j > 0 && before(unique[j], unique[j - 1]); --j) {
+      std::swap(unique[j], unique[j - 1]);
     }
   }
+  std::array<Vec2d, 16> chain{};
   std::size_t count = 0;
-  std::size_t current = start;
-  do {
-    if (count == storage.size()) {
+  const auto push = [&](const Vec2d& p, std::size_t floor) {
+    while (count >= floor + 2 && cross(chain[count - 1] - chain[count - 2], p - chain[count - 2]) <= 0.0) {
+      --count;
+    }
+    chain[count++] = p;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    push(unique[i], 0);
+  }
+  const std::size_t lower = count - 1; // the upper chain starts at the rightmost point
+  for (std::size_t i = n - 1; i-- > 0;) {
+    push(unique[i], lower);
+  }
+  --count; // the last point is the first again
+  // Drop vertices within linearSlop of the line through their neighbours, the flattest first and
+  // one at a time, testing again against the current neighbours: dropping two adjacent ones
+  // together could cut a corner far outside either's own tolerance.
+  const auto offset = [&](std::size_t i) {
+    const Vec2d& prev = chain[(i + count - 1) % count];
+    const Vec2d edge = chain[(i + 1) % count] - prev;
+    const double len = length(edge);
+    // Outward (right of prev -> next) for a counter-clockwise loop; a reflex vertex is negative.
+    return len > 0.0 ? cross(chain[i] - prev, edge) / len : 0.0;
+  };
+  while (count >= 3) {
+    std::size_t flattest = 0;
+    double smallest = offset(0);
+    for (std::size_t i = 1; i < count; ++i) {
+      const double o = offset(i);
+      if (o < smallest) {
+        flattest = i;
+        smallest = o;
+      }
+    }
+    if (smallest > static_cast<double>(linearSlop)) {
       break;
     }
-    storage[count++] = unique[current];
-    std::size_t next = current == 0 ? 1 : 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i == current || i == next) {
-        continue;
-      }
-      const Vec2f e = unique[next] - unique[current];
-      const float c = cross(e, unique[i] - unique[current]);
-      // Clockwise of the edge (c < 0) means i is "more outside": take it.
-      if (c < 0.0f || (c == 0.0f && lengthSquared(unique[i] - unique[current]) > lengthSquared(e))) {
-        next = i;
-      }
-    }
-    current = next;
-  } while (current != start);
-  // Remove vertices that lie (nearly) on the line through their neighbours.
-  std::array<Vec2f, 8> kept{};
-  std::size_t k = 0;
+    std::copy(chain.begin() + static_cast<std::ptrdiff_t>(flattest + 1),
+              chain.begin() + static_cast<std::ptrdiff_t>(count),
+              chain.begin() + static_cast<std::ptrdiff_t>(flattest));
+    --count;
+  }
+  if (count < 3) {
+    throwInvalid("points", 0.0, "the points are collinear or coincident: no area");
+  }
+  // The vertices are input points, exactly: doubles converted from floats convert back unchanged.
   for (std::size_t i = 0; i < count; ++i) {
-    const Vec2f& prev = storage[(i + count - 1) % count];
-    const Vec2f& next = storage[(i + 1) % count];
-    const Vec2f edge = next - prev;
-    const float len = length(edge);
-    const float offset = len > 0.0f ? cross(edge, storage[i] - prev) / len : 0.0f;
-    if (std::abs(offset) > linearSlop) {
-      kept[k++] = storage[i];
-    }
+    storage[i] = {static_cast<float>(chain[i].x), static_cast<float>(chain[i].y)};
   }
-  if (k < 3) {
-    throwInvalid("points", static_cast<double>(k), "the points are collinear or coincident: no area");
-  }
-  std::copy(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(k), storage.begin());
-  return {storage.data(), k};
+  return {storage.data(), count};
 }
 
 Polygon makePolygon(std::span<const Vec2f> points, float radius) {
   requireNonNegative(radius, "radius");
+  requireCoordinate(radius, "radius");
   std::array<Vec2f, 8> storage{};
   const std::span<const Vec2f> hull = computeHull(points, storage);
   Polygon p;
@@ -171,15 +214,37 @@ Polygon makePolygon(std::span<const Vec2f> points, float radius) {
 Polygon makeBox(float halfWidth, float halfHeight) { return makeOffsetBox(halfWidth, halfHeight, {}, 0.0f); }
 
 Polygon makeOffsetBox(float halfWidth, float halfHeight, const Vec2f& center, float angle) {
-  requirePositive(halfWidth, "halfWidth");
-  requirePositive(halfHeight, "halfHeight");
+  requireBoxHalfExtent(halfWidth, "halfWidth");
+  requireBoxHalfExtent(halfHeight, "halfHeight");
   requireFinite(center, "center");
+  requireCoordinate(center.x, "center.x");
+  requireCoordinate(center.y, "center.y");
   requireFinite(angle, "angle");
   const Transform2f xf{center, Rot2f::fromAngle(angle)};
   const std::array<Vec2f, 4> corners{
       transformPoint(xf, {-halfWidth, -halfHeight}), transformPoint(xf, {halfWidth, -halfHeight}),
       transformPoint(xf, {halfWidth, halfHeight}), transformPoint(xf, {-halfWidth, halfHeight})};
-  return makePolygon(corners);
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const std::string field = "corners[" + std::to_string(i) + "]";
+    requireCoordinate(corners[i].x, field + ".x");
+    requireCoordinate(corners[i].y, field + ".y");
+  }
+  // Sides of at least 2 linearSlop keep all four corners in exact arithmetic (a corner lies at
+  // least sqrt(2) linearSlop from the diagonal through its neighbours), but far from the origin
+  // float rounding of the corners (0.06 m at 1e6 m) can still weld two or flatten one: the
+  // thinner side is then refused rather than returned as a triangle.
+  const char* thinner = halfWidth <= halfHeight ? "halfWidth" : "halfHeight";
+  const float thinnerValue = std::min(halfWidth, halfHeight);
+  Polygon box;
+  try {
+    box = makePolygon(corners);
+  } catch (const Error&) {
+    box.count = 0;
+  }
+  if (box.count != 4) {
+    throwInvalid(thinner, thinnerValue, "too thin at this centre: float rounding welds corners");
+  }
+  return box;
 }
 
 MassData computeMass(const Circle& shape, float density) {

@@ -11,8 +11,10 @@
 //  - every input point inside the hull or outside it by at most hullTolerance (the welding and the
 //    collinear-point removal may cut off a sliver that thin, no more);
 //  - the centroid inside; the mass data (computeMass at density 1) finite and positive with its
-//    centre inside; the bounding box finite and holding every vertex.
+//    centre inside; the bounding box finite and holding every vertex;
+//  - every vertex coordinate and the radius within maxPolygonCoordinate (1e6 m).
 // A rounded polygon keeps the radius it was given; a negative or non-finite radius is an error.
+// A box has 4 vertices and half-widths of at least linearSlop.
 #include "fuzz_support.hpp"
 
 #include <impetus/error.hpp>
@@ -67,35 +69,6 @@ double outside(std::span<const Vec2f> v, std::size_t i, V p) {
   return -cross(e, sub(p, a)) / len(e);
 }
 
-/// Open finding (regressions/polygon_hull/open-wrap-*): with a point on an edge next to the
-/// start vertex (the lowest x), the gift wrapping can misjudge the two in float, skip the start,
-/// never return to it, and stop at the 8-vertex guard: a loop that repeats vertices or winds
-/// around twice; with denormal coordinates it can also end on three collinear points. True when
-/// the hull shows it (a repeated vertex, a vertex outside another edge: not convex as a whole, or
-/// a vertex within linearSlop of its neighbours' line) and IMPETUS_FUZZ_SKIP_OPEN asks to let it
-/// pass.
-bool openWrapFinding(std::span<const Vec2f> hull, double eps) {
-  if (!impetus::fuzz::skipOpenFindings()) {
-    return false;
-  }
-  for (std::size_t i = 0; i < hull.size(); ++i) {
-    for (std::size_t j = 0; j < hull.size(); ++j) {
-      if (j != i && hull[i].x == hull[j].x && hull[i].y == hull[j].y) {
-        return true;
-      }
-      if (outside(hull, i, d(hull[j])) > eps) {
-        return true;
-      }
-    }
-    const V prev = d(hull[(i + hull.size() - 1) % hull.size()]);
-    const V next = d(hull[(i + 1) % hull.size()]);
-    if (std::abs(cross(sub(next, prev), sub(d(hull[i]), prev)) / len(sub(next, prev))) <= r2::linearSlop - eps) {
-      return true;
-    }
-  }
-  return false;
-}
-
 /// Checks a vertex loop: from the input points, welded, counter-clockwise, convex,
 /// without collinear vertices, holding every input point.
 void checkHull(std::span<const Vec2f> hull, std::span<const Vec2f> input, double scale) {
@@ -103,15 +76,14 @@ void checkHull(std::span<const Vec2f> hull, std::span<const Vec2f> input, double
   FUZZ_CHECK(hull.size() >= 3 && hull.size() <= 8, where() + ": vertex count");
   // Rounding: the library decides in float what is checked here in double.
   const double eps = 1e-5 * scale;
-  if (openWrapFinding(hull, eps)) {
-    return;
-  }
   for (std::size_t i = 0; i < hull.size(); ++i) {
     bool fromInput = false;
     for (const Vec2f& p : input) {
       fromInput = fromInput || (p.x == hull[i].x && p.y == hull[i].y);
     }
     FUZZ_CHECK(fromInput, where() + ": vertex " + std::to_string(i) + " is not an input point");
+    FUZZ_CHECK(std::abs(hull[i].x) <= r2::maxPolygonCoordinate && std::abs(hull[i].y) <= r2::maxPolygonCoordinate,
+               where() + ": vertex " + std::to_string(i) + " beyond maxPolygonCoordinate");
     for (std::size_t j = i + 1; j < hull.size(); ++j) {
       FUZZ_CHECK(len(sub(d(hull[i]), d(hull[j]))) >= r2::linearSlop - eps,
                  where() + ": vertices " + std::to_string(i) + " and " + std::to_string(j) + " not welded");
@@ -132,11 +104,8 @@ void checkHull(std::span<const Vec2f> hull, std::span<const Vec2f> input, double
                                                             " is within linearSlop of its neighbours' line (" +
                                                             str(offset) + ")");
   }
-  // Open finding (regressions/polygon_hull/open-collinear-removal-drops-point*): the collinear-point removal
-  // can cut off an input point far outside the tolerance.
-  if (impetus::fuzz::skipOpenFindings()) {
-    return;
-  }
+  // Removing collinear vertices one at a time against their current neighbours keeps a dropped
+  // point within a few linearSlop (regressions/polygon_hull/collinear-removal-drops-point*).
   for (const Vec2f& p : input) {
     for (std::size_t i = 0; i < hull.size(); ++i) {
       const double out = outside(hull, i, d(p));
@@ -149,11 +118,9 @@ void checkHull(std::span<const Vec2f> hull, std::span<const Vec2f> input, double
 void checkPolygon(const r2::Polygon& polygon, std::span<const Vec2f> input, float radius, double scale) {
   const std::span<const Vec2f> vertices(polygon.vertices.data(), static_cast<std::size_t>(polygon.count));
   checkHull(vertices, input, scale);
-  if (openWrapFinding(vertices, 1e-5 * scale)) {
-    return;
-  }
   const auto where = [&] { return std::string("polygon [") + describe(vertices) + "] radius " + str(polygon.radius); };
   FUZZ_CHECK(polygon.radius == radius, where() + ": the radius given was " + str(radius));
+  FUZZ_CHECK(polygon.radius <= r2::maxPolygonCoordinate, where() + ": radius beyond maxPolygonCoordinate");
   const double eps = 1e-5 * scale;
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     const V n = d(polygon.normals[i]);
@@ -220,13 +187,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return std::string("box ") + str(hx) + " x " + str(hy) + " at " + str(center) + ", " + str(angle) + " rad";
       };
       const double extent = std::abs(hx) + std::abs(hy) + std::abs(center.x) + std::abs(center.y);
-      // Open findings: huge coordinates (below), and a side within rounding of linearSlop, where
-      // one pair of corners is welded and the other not: a triangle
-      // (regressions/polygon_hull/open-box-side-near-slop-is-triangle*).
-      if (impetus::fuzz::skipOpenFindings() &&
-          (extent > 1e6 || 2.0f * std::min(std::abs(hx), std::abs(hy)) < 2.0f * r2::linearSlop)) {
-        return 0;
-      }
+      // A side below 2 linearSlop used to come out a triangle, one pair of corners welded and the
+      // other not (regressions/polygon_hull/box-side-near-slop-is-triangle*): it is refused now.
+      FUZZ_CHECK(std::min(hx, hy) >= r2::linearSlop, where() + ": a side below 2 linearSlop accepted");
       FUZZ_CHECK(box.count == 4, where() + ": " + std::to_string(box.count) + " vertices");
       // The corners are the input points of the hull.
       const impetus::Transform2f xf{center, impetus::Rot2f::fromAngle(angle)};
@@ -251,16 +214,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     extent = std::max(extent, static_cast<double>(std::abs(radius)));
   }
 
-  // Open finding: coordinates are not bounded, and from about 1e10 m the mass data overflow
-  // float, from about 1e19 m the squared distances that weld points and the cross products that
-  // orient them do (repeated vertices, zero area: regressions/polygon_hull/open-huge-*).
-  if (impetus::fuzz::skipOpenFindings() && extent > 1e6) {
-    std::array<Vec2f, 8> storage{};
-    returnsOrThrowsImpetusError("computeHull", [&] { (void)r2::computeHull(points, storage); });
-    returnsOrThrowsImpetusError("makePolygon", [&] { (void)r2::makePolygon(points, radius); });
-    return 0;
-  }
-
+  // Coordinates beyond maxPolygonCoordinate overflowed the mass data (from about 1e10 m) and the
+  // hull's squared distances (1e19 m, regressions/polygon_hull/huge-*): the vertex check in
+  // checkHull makes them refused.
   std::array<Vec2f, 8> storage{};
   std::span<const Vec2f> hull;
   if (returnsOrThrowsImpetusError("computeHull", [&] { hull = r2::computeHull(points, storage); })) {

@@ -40,16 +40,30 @@ struct Polygon {
   int count = 0;
 };
 
-/// The convex hull of up to 8 points: counter-clockwise, without duplicate (closer than
-/// linearSlop) or collinear points. Throws impetus::Error naming `points` when there are fewer
-/// than 3 or more than 8 points, a point is not finite, or the hull has no area.
+/// Bound on polygon vertex coordinates (in the body's frame) and rounding radii, m. Within it
+/// the mass data stay finite in float (inertia at density 1 below 1e26 kg m^2 at the bound, the
+/// float limit 3e38) and the hull's double-precision tests round by less than 1e-9 m. Beyond
+/// about 3e4 m float spacing exceeds linearSlop, so such vertices are only as precise as float.
+inline constexpr float maxPolygonCoordinate = 1.0e6f;
+
+/// The convex hull of 3 to 8 points: counter-clockwise and convex, starting at the lowest x
+/// (then lowest y); its vertices are input points, none closer than linearSlop to another
+/// (closer points are welded) and none within linearSlop of the line through its neighbours
+/// (removed one at a time, the flattest first), so every input point lies inside the hull or
+/// within a few linearSlop of it. Throws impetus::Error naming `points.size` for fewer than 3 or
+/// more than 8 points, `points[i].x`/`.y` for a coordinate that is not finite or beyond
+/// maxPolygonCoordinate, and `points` when the hull has no area (collinear or welded points).
 [[nodiscard]] std::span<const Vec2f> computeHull(std::span<const Vec2f> points, std::array<Vec2f, 8>& storage);
 
-/// A polygon from arbitrary points (their hull) and a rounding radius >= 0.
+/// A polygon from arbitrary points (their hull) and a rounding radius in [0, maxPolygonCoordinate].
 [[nodiscard]] Polygon makePolygon(std::span<const Vec2f> points, float radius = 0.0f);
 /// A box of half-widths hx, hy centred on the origin.
 [[nodiscard]] Polygon makeBox(float halfWidth, float halfHeight);
-/// A box of half-widths hx, hy centred at `center`, rotated by `angle` radians.
+/// A box of half-widths hx, hy centred at `center`, rotated by `angle` radians. Each half-width
+/// must lie in [linearSlop, maxPolygonCoordinate] (a thinner box would weld corners or lose one as
+/// collinear and come out a triangle), as must |center| and the corners' coordinates
+/// (`corners[i]`, in the order (-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)). A box whose corners
+/// float rounding far from the origin welds is refused naming its thinner half-width.
 [[nodiscard]] Polygon makeOffsetBox(float halfWidth, float halfHeight, const Vec2f& center, float angle);
 
 /// Mass, centre of mass (local) and rotational inertia about the centre of mass.
