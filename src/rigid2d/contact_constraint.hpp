@@ -100,17 +100,27 @@ struct ContactConstraint {
   return c;
 }
 
+/// A lane without a contact, in the solver's slot lists.
+inline constexpr std::uint32_t noContact = ~std::uint32_t{0};
+
+/// Notes the fastest impact for hit events and keeps the impulses for the next warm start.
+[[gnu::always_inline]] static inline void storePoint(Contact& contact, int k, float normalImpulse, float tangentImpulse,
+                                                     float maxNormalImpulse) {
+  const float approach = contact.approachBefore[static_cast<std::size_t>(k)];
+  if (maxNormalImpulse > 0.0f && approach > contact.approachSpeed) {
+    contact.approachSpeed = approach;
+    contact.fastestPoint = k;
+  }
+  ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(k)];
+  mp.normalImpulse = normalImpulse;
+  mp.tangentImpulse = tangentImpulse;
+}
+
 /// The per-substep constants of a solve pass.
 struct ContactSolveParams {
   float inverseH = 0.0f;  ///< 1/s
   float pushSpeed = 0.0f; ///< the most the bias may push apart, m/s
   bool useBias = true;    ///< false: the relax pass
-};
-
-/// What a lane's contact keeps for the next step's warm start and for hit events.
-struct LaneImpulses {
-  float rollingImpulse = 0.0f;
-  std::array<float, 2> normal{}, tangent{}, maxNormal{};
 };
 
 /// Wide kernels over batches [begin, end) of an array of `width`-lane constraints (opaque here:
@@ -130,8 +140,10 @@ struct WideKernels {
                 const ContactSolveParams& params) = nullptr;
   void (*restitution)(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states,
                       std::uint32_t staticIndex, float threshold) = nullptr;
-  /// Every lane's impulses of batch `batch` into lanes[0, width).
-  void (*read)(const void* batches, std::uint32_t batch, LaneImpulses* lanes) = nullptr;
+  /// Stores batch `batch`'s impulses into the contacts in slots[0, width) (noContact: none) for
+  /// the next warm start, with the fastest approach and the hit flag (approachMayHit).
+  void (*store)(const void* batches, std::uint32_t batch, WorldState& w, const std::uint32_t* slots,
+                float hitThreshold) = nullptr;
 };
 
 /// The most lanes a kernel table may have (AVX2's eight floats).

@@ -73,8 +73,6 @@ const WideKernels& selectWideKernels(SimdLevel level) {
 
 namespace {
 
-constexpr std::uint32_t noContact = ~std::uint32_t{0};
-
 /// The first colour among `allowed` free for both moving bodies (static ones pass as null), or
 /// -1; marks it taken. One mask of used colours per body: a lookup touches two words.
 int findColour(ContactSolverData& d, std::uint32_t a, std::uint32_t b, std::uint32_t staticIndex,
@@ -208,18 +206,6 @@ void restitutionOne(ContactConstraint& c, std::vector<BodyState>& states, std::u
     states[c.indexB].v = b.v;
     states[c.indexB].w = b.w;
   }
-}
-
-/// Notes the fastest impact for hit events and keeps the impulses for the next warm start.
-void storePoint(Contact& contact, int k, float normalImpulse, float tangentImpulse, float maxNormalImpulse) {
-  const float approach = contact.approachBefore[static_cast<std::size_t>(k)];
-  if (maxNormalImpulse > 0.0f && approach > contact.approachSpeed) {
-    contact.approachSpeed = approach;
-    contact.fastestPoint = k;
-  }
-  ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(k)];
-  mp.normalImpulse = normalImpulse;
-  mp.tangentImpulse = tangentImpulse;
 }
 
 /// How many batches ahead the contact passes ask for their contacts: a colour's contacts lie
@@ -396,28 +382,13 @@ void storeImpulses(WorldState& w) {
   const int width = d.kernels->width;
   const auto batches = static_cast<std::uint32_t>(d.slots.size() / static_cast<std::size_t>(width));
   w.parallelFor(batches, 64, [&](std::uint32_t begin, std::uint32_t end) {
-    std::array<LaneImpulses, maxWideLanes> lanes;
     for (std::uint32_t batch = begin; batch < end; ++batch) {
       if (batch + prefetchDistance < end) {
         prefetchContacts(w, &d.slots[std::size_t{batch + prefetchDistance} * static_cast<std::size_t>(width)],
                          static_cast<std::size_t>(width));
       }
-      d.kernels->read(d.batches(), batch, lanes.data());
-      for (int i = 0; i < width; ++i) {
-        const std::uint32_t slot =
-            d.slots[std::size_t{batch} * static_cast<std::size_t>(width) + static_cast<std::size_t>(i)];
-        if (slot == noContact) {
-          continue;
-        }
-        const LaneImpulses& impulses = lanes[static_cast<std::size_t>(i)];
-        Contact& contact = w.contacts[slot];
-        contact.rollingImpulse = impulses.rollingImpulse;
-        for (int k = 0; k < contact.manifold.pointCount; ++k) {
-          const auto kk = static_cast<std::size_t>(k);
-          storePoint(contact, k, impulses.normal[kk], impulses.tangent[kk], impulses.maxNormal[kk]);
-        }
-        w.maybeHit[slot] = approachMayHit(contact.approachSpeed, hitThreshold) ? 1 : 0;
-      }
+      d.kernels->store(d.batches(), batch, w, &d.slots[std::size_t{batch} * static_cast<std::size_t>(width)],
+                       hitThreshold);
     }
   });
 }

@@ -280,16 +280,21 @@ void restitutionBatches(void* batches, std::uint32_t begin, std::uint32_t end, B
   }
 }
 
-void readBatch(const void* batches, std::uint32_t batch, LaneImpulses* lanes) {
+void storeBatch(const void* batches, std::uint32_t batch, WorldState& w, const std::uint32_t* slots,
+                float hitThreshold) {
   const ContactConstraintWide& wc = static_cast<const ContactConstraintWide*>(batches)[batch];
   for (int i = 0; i < simdWidth; ++i) {
-    LaneImpulses& out = lanes[i];
-    out.rollingImpulse = lane(wc.rollingImpulse, i);
-    for (std::size_t k = 0; k < 2; ++k) {
-      out.normal[k] = lane(wc.points[k].normalImpulse, i);
-      out.tangent[k] = lane(wc.points[k].tangentImpulse, i);
-      out.maxNormal[k] = lane(wc.points[k].maxNormalImpulse, i);
+    const std::uint32_t slot = slots[i];
+    if (slot == noContact) {
+      continue;
     }
+    Contact& contact = w.contacts[slot];
+    contact.rollingImpulse = lane(wc.rollingImpulse, i);
+    for (int k = 0; k < contact.manifold.pointCount; ++k) {
+      const ContactConstraintWide::Point& p = wc.points[static_cast<std::size_t>(k)];
+      storePoint(contact, k, lane(p.normalImpulse, i), lane(p.tangentImpulse, i), lane(p.maxNormalImpulse, i));
+    }
+    w.maybeHit[slot] = approachMayHit(contact.approachSpeed, hitThreshold) ? 1 : 0;
   }
 }
 
@@ -298,7 +303,7 @@ static_assert(alignof(ContactConstraintWide) <= wideAlignment);
 static_assert(sizeof(ContactConstraintWide) % alignof(ContactConstraintWide) == 0);
 
 constexpr WideKernels wideKernels{simdName,          simdWidth,     sizeof(ContactConstraintWide), &prepareBatch,
-                                  &warmStartBatches, &solveBatches, &restitutionBatches,           &readBatch};
+                                  &warmStartBatches, &solveBatches, &restitutionBatches,           &storeBatch};
 
 } // namespace
 } // namespace impetus::rigid2d::detail

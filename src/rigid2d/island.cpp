@@ -20,7 +20,7 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
 
 /// A sleeping body touched by a moving one, or joined to one, wakes up (before the solve, so it
 /// takes part).
-void wakeTouched(WorldState& w) {
+void wakeTouched(WorldState& w, bool sleeperTouched) {
   // A wake spreads through a sleeping stack or ragdoll one contact or joint at a time: repeat
   // until nothing new wakes (almost always one pass, which finds nothing to do).
   const auto wakeOther = [](Body& a, Body& b) {
@@ -34,7 +34,17 @@ void wakeTouched(WorldState& w) {
     }
     return false;
   };
-  for (bool changed = true; changed;) {
+  bool changed = true;
+  if (!sleeperTouched) {
+    // No touching contact joins a moving body to a sleeping one: only a joint can start a wake.
+    changed = false;
+    for (const Joint& joint : w.joints) {
+      if (joint.alive) {
+        changed = wakeOther(w.bodies[joint.bodyA], w.bodies[joint.bodyB]) || changed;
+      }
+    }
+  }
+  while (changed) {
     changed = false;
     for (const Joint& joint : w.joints) {
       if (joint.alive) {

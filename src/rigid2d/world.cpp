@@ -238,13 +238,24 @@ void updatePairs(WorldState& w) {
   }
 }
 
-/// What the collide pass found for a contact, in WorldState::touchChanges.
-enum TouchChange : std::uint8_t { unchanged = 0, began = 1, ended = 2, disjoint = 3 };
+/// What the collide pass found for a contact, in WorldState::touchChanges: a change (the low
+/// bits) and whether it touches a sleeping body (a flag).
+enum TouchChange : std::uint8_t {
+  unchanged = 0,
+  began = 1,
+  ended = 2,
+  disjoint = 3,
+  changeBits = 3,
+  touchesSleeper = 4
+};
+
+[[nodiscard]] bool asleep(const Body& b) noexcept { return b.alive && b.type != BodyType::staticBody && !b.awake; }
 
 /// Recomputes the manifolds of contacts with a moving body (in parallel: each writes only its
 /// own contact), then, in slot order, ends the contacts whose fat boxes no longer overlap and
-/// reports begin and end events.
-void collideContacts(WorldState& w) {
+/// reports begin and end events. True when a touching contact joins a moving body to a sleeping
+/// one.
+bool collideContacts(WorldState& w) {
   w.touchChanges.assign(w.contacts.size(), unchanged);
   const float reuseDistance = w.def.contactReuseDistance;
   const float reuseTurnSine = std::sin(w.def.contactReuseAngle);
@@ -263,9 +274,12 @@ void collideContacts(WorldState& w) {
       if (!bodyA.moving() && !bodyB.moving()) {
         continue; // nothing moved: the manifold stands
       }
+      const bool sleeper = !contact.sensor && (asleep(bodyA) || asleep(bodyB));
       if (reuseDistance > 0.0f && contact.reusable && contact.manifold.pointCount > 0 &&
           carryManifold(contact, bodyA.transform, bodyB.transform, reuseDistance, reuseTurnSine)) {
-        continue; // the same features, points carried along: still touching, impulses kept
+        // The same features, points carried along: still touching, impulses kept.
+        w.touchChanges[slot] = sleeper ? touchesSleeper : unchanged;
+        continue;
       }
       const Manifold old = contact.manifold;
       contact.manifold = collide(w.shapes[contact.shapeA], bodyA.transform, w.shapes[contact.shapeB], bodyB.transform);
@@ -277,6 +291,9 @@ void collideContacts(WorldState& w) {
       if (touching != wasTouching) {
         // Remember the old manifold's point count: the end event needs to know it touched.
         w.touchChanges[slot] = touching ? began : ended;
+      }
+      if (touching && sleeper) {
+        w.touchChanges[slot] |= touchesSleeper;
       }
       // Warm starting: a point with the same features as last step keeps its impulses.
       for (int i = 0; i < contact.manifold.pointCount; ++i) {
@@ -294,8 +311,10 @@ void collideContacts(WorldState& w) {
       }
     }
   });
+  bool sleeperTouched = false;
   for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
-    const std::uint8_t change = w.touchChanges[slot];
+    const std::uint8_t change = w.touchChanges[slot] & changeBits;
+    sleeperTouched = sleeperTouched || (w.touchChanges[slot] & touchesSleeper) != 0;
     if (change == unchanged) {
       continue;
     }
@@ -320,6 +339,7 @@ void collideContacts(WorldState& w) {
       w.contactEvents.ends.push_back({a.id, b.id});
     }
   }
+  return sleeperTouched;
 }
 
 void synchronizeShapes(WorldState& w, Body& b) {
@@ -645,8 +665,7 @@ void World::step(float dt) {
   take(w.sensorEvents.ends, w.pendingSensorEvents.ends);
   w.jointEvents.breaks.clear();
   updatePairs(w);
-  collideContacts(w);
-  detail::wakeTouched(w);
+  detail::wakeTouched(w, collideContacts(w));
   w.maybeHit.assign(w.contacts.size(), 0);
   if (w.def.solver == SolverKind::bookImpulse) {
     detail::solveBookImpulse(w, dt);

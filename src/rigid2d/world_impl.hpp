@@ -348,7 +348,9 @@ void storeImpulses(WorldState& w);
 
 // island.cpp
 /// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).
-void wakeTouched(WorldState& w);
+/// sleeperTouched: the collide pass found a touching contact between a moving and a sleeping
+/// body (without one, only joints are looked at).
+void wakeTouched(WorldState& w, bool sleeperTouched);
 /// Accumulates rest time and puts islands to sleep that have rested long enough.
 void updateSleep(WorldState& w, float dt);
 
