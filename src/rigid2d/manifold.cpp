@@ -60,73 +60,293 @@ EdgeSeparation maxSeparation(const PolygonView& p1, const PolygonView& p2) {
   return best;
 }
 
-/// Closest points between segments p1-q1 and p2-q2 (Ericson, Real-Time Collision Detection
-/// 5.1.9): parameters s on the first, t on the second, both in [0, 1].
+std::uint16_t featureId(int referenceEdge, int incidentVertex, bool flipped) {
+  return static_cast<std::uint16_t>((flipped ? 0x8000 : 0) | (referenceEdge << 4) | incidentVertex);
+}
+
+/// Below this distance two points give no direction: a normal taken along the line between
+/// them is replaced by a defined one. 1e-9 m is under the spacing of floats at 1 cm (9.3e-10 m),
+/// so such points coincide within rounding at any coordinate the world resolves, and no
+/// direction is lost; and it is far above the distances whose squares underflow (about 1e-19 m,
+/// where the "normal" of a positive but inexact length was 2% off unit length).
+constexpr float minNormalDistance = 1e-9f;
+
+/// The closest points of segment p1-q1 (the reference face) and segment p2-q2 (the incident
+/// edge): parameters s on the first and t on the second, both in [0, 1] (Ericson, Real-Time
+/// Collision Detection 5.1.9), and which feature of the second holds its point (0 p2, 1 q2,
+/// 2 between them), named by the branch that clamps t, not by comparing t with 0 and 1.
 struct SegmentClosest {
   float s;
   float t;
+  int feature2;
 };
 
-SegmentClosest segmentDistance(const Vec2f& p1, const Vec2f& q1, const Vec2f& p2, const Vec2f& q2) {
+SegmentClosest segmentClosest(const Vec2f& p1, const Vec2f& q1, const Vec2f& p2, const Vec2f& q2) {
   const Vec2f d1 = q1 - p1;
   const Vec2f d2 = q2 - p2;
   const Vec2f r = p1 - p2;
   const float a = dot(d1, d1);
   const float e = dot(d2, d2);
   const float f = dot(d2, r);
-  constexpr float tiny = 1e-12f;
-  if (a <= tiny && e <= tiny) {
-    return {0.0f, 0.0f};
+  constexpr float tiny = 1e-12f; // hand-made polygons only: makePolygon welds closer points
+  if (e <= tiny) {
+    return {a <= tiny ? 0.0f : std::clamp(dot(d1, p2 - p1) / a, 0.0f, 1.0f), 0.0f, 0};
   }
   if (a <= tiny) {
-    return {0.0f, std::clamp(f / e, 0.0f, 1.0f)};
+    const float t = f / e;
+    return t <= 0.0f ? SegmentClosest{0.0f, 0.0f, 0}
+                     : (t >= 1.0f ? SegmentClosest{0.0f, 1.0f, 1} : SegmentClosest{0.0f, t, 2});
   }
   const float c = dot(d1, r);
-  if (e <= tiny) {
-    return {std::clamp(-c / a, 0.0f, 1.0f), 0.0f};
-  }
   const float b = dot(d1, d2);
-  const float denom = a * e - b * b;
-  float s = denom > tiny ? std::clamp((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
-  float t = (b * s + f) / e;
-  if (t < 0.0f) {
-    t = 0.0f;
-    s = std::clamp(-c / a, 0.0f, 1.0f);
-  } else if (t > 1.0f) {
-    t = 1.0f;
-    s = std::clamp((b - c) / a, 0.0f, 1.0f);
+  const float denom = a * e - b * b; // 0: parallel, any s will do
+  const float s = denom > tiny ? std::clamp((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
+  // t for that s; where it leaves [0, 1], t is the end and s the closest point to that end.
+  const float tNumerator = b * s + f;
+  if (tNumerator <= 0.0f) {
+    return {std::clamp(-c / a, 0.0f, 1.0f), 0.0f, 0};
   }
-  return {s, t};
+  if (tNumerator >= e) {
+    return {std::clamp((b - c) / a, 0.0f, 1.0f), 1.0f, 1};
+  }
+  return {s, tNumerator / e, 2};
 }
 
-std::uint16_t featureId(int referenceEdge, int incidentVertex, bool flipped) {
-  return static_cast<std::uint16_t>((flipped ? 0x8000 : 0) | (referenceEdge << 4) | incidentVertex);
+/// How far an incident point may lie beyond a side plane of the reference face and still count
+/// as over the face (kept by the clip, not moved onto the plane). It absorbs rounding, so that a
+/// box flush with the one below keeps its face contact (its corners a rounding beyond the side
+/// planes) and its vertex ids: 5 um, or 16 units in the last place of the largest coordinate in
+/// play where that is more. An incident vertex that far beyond a side plane changes a face
+/// contact's point and separation by at most that much.
+float sideTolerance(const Vec2f& v1, const Vec2f& v2, const Vec2f& w1, const Vec2f& w2) {
+  const float extent = std::max({std::abs(v1.x), std::abs(v1.y), std::abs(v2.x), std::abs(v2.y), std::abs(w1.x),
+                                 std::abs(w1.y), std::abs(w2.x), std::abs(w2.y)});
+  return std::max(1e-3f * linearSlop, 16.0f * std::numeric_limits<float>::epsilon() * extent);
 }
 
-/// Cores apart: if the closest features of the reference edge v1-v2 and the incident edge
-/// w1-w2 (A's frame) are two vertices, the contact normal is along the line between them (a
-/// rounded corner against a rounded corner), not a face normal, and the separation is their
-/// true distance. Then `m` is that contact (or none, beyond reach) and the result is true.
-bool cornerContact(const Vec2f& v1, const Vec2f& v2, const Vec2f& w1, const Vec2f& w2, float rRef, float rInc, int edge,
-                   int edgeNext, bool flip, const Transform2f& xfA, const Transform2f& xfB, Manifold& m) {
-  const SegmentClosest sc = segmentDistance(v1, v2, w1, w2);
-  const bool refVertex = sc.s == 0.0f || sc.s == 1.0f;
-  const bool incVertex = sc.t == 0.0f || sc.t == 1.0f;
-  if (!refVertex || !incVertex) {
-    return false;
+/// A reference face and its incident edge, in A's frame: the face v1-v2 (edge `edge` of the
+/// reference polygon, outward normal n) and the edge w1-w2 (vertices i1, i2) of the other
+/// polygon most anti-parallel to n; `flip` when the reference polygon is B.
+struct FacePair {
+  Vec2f v1;
+  Vec2f v2;
+  Vec2f n;
+  Vec2f w1;
+  Vec2f w2;
+  int edge;
+  int edgeNext;
+  int i1;
+  int i2;
+  float rRef;
+  float rInc;
+  bool flip;
+};
+
+[[gnu::always_inline]] inline FacePair facePair(const PolygonView& reference, int referenceCount, float rRef,
+                                                const PolygonView& incident, int incidentCount, float rInc, int edge,
+                                                bool flip) {
+  const int edgeNext = edge + 1 < referenceCount ? edge + 1 : 0;
+  const Vec2f n = reference.normals[edge];
+  // Incident edge: the one most anti-parallel to the reference normal.
+  int incidentEdge = 0;
+  float minDot = std::numeric_limits<float>::max();
+  for (int i = 0; i < incidentCount; ++i) {
+    const float d = dot(n, incident.normals[i]);
+    if (d < minDot) {
+      minDot = d;
+      incidentEdge = i;
+    }
   }
-  const Vec2f pRef = lerp(v1, v2, sc.s);
-  const Vec2f pInc = lerp(w1, w2, sc.t);
-  const float dist = distance(pRef, pInc);
-  const float separation = dist - rRef - rInc;
-  if (separation > speculativeDistance || dist == 0.0f) {
+  const int i2 = incidentEdge + 1 < incidentCount ? incidentEdge + 1 : 0;
+  return {reference.vertices[edge],
+          reference.vertices[edgeNext],
+          n,
+          incident.vertices[incidentEdge],
+          incident.vertices[i2],
+          edge,
+          edgeNext,
+          incidentEdge,
+          i2,
+          rRef,
+          rInc,
+          flip};
+}
+
+/// The closest points of a face pair's face and incident edge, and how far the incident point
+/// lies beyond the face's side planes (`beyond` <= 0: over the face).
+struct CoreClosest {
+  Vec2f onReference;
+  Vec2f onIncident;
+  float distance = 0.0f;
+  float beyond = 0.0f;
+  int referenceVertex = 0; ///< the face's end nearer the incident point: 0 v1, 1 v2
+  int incidentFeature = 0; ///< 0 w1, 1 w2, 2 between them
+};
+
+/// Over the face (`beyond` within the side tolerance) the closest points are a face contact:
+/// the incident point is at its distance straight along n, and clipping finds it (and the
+/// edge's other point on the face). Beyond a side plane, the face's nearest point is its end
+/// vertex, exactly: the incident point is then taken again as the closest point to that vertex
+/// (a vertex of the incident edge, or a point between where the incident edge is the nearer
+/// feature), and the contact is along the line between them. The decision is by where the
+/// incident point lies, not by comparing clamped parameters with 0 and 1: a parameter a
+/// rounding off its end used to send a corner-to-corner pair to the clip, which dropped it.
+CoreClosest coreClosest(const FacePair& f, float tolerance) {
+  const SegmentClosest sc = segmentClosest(f.v1, f.v2, f.w1, f.w2);
+  CoreClosest c;
+  c.onReference = lerp(f.v1, f.v2, sc.s);
+  c.onIncident = lerp(f.w1, f.w2, sc.t);
+  c.incidentFeature = sc.feature2;
+  // The face's direction: the outward normal of a counter-clockwise edge is (t.y, -t.x).
+  const Vec2f tangent{-f.n.y, f.n.x};
+  const float along = dot(tangent, c.onIncident - f.v1);
+  const float length = dot(tangent, f.v2 - f.v1);
+  c.beyond = std::max(-along, along - length);
+  c.referenceVertex = along + along < length ? 0 : 1;
+  if (c.beyond > tolerance) {
+    const Vec2f vertex = c.referenceVertex == 0 ? f.v1 : f.v2;
+    const SegmentClosest toVertex = segmentClosest(vertex, vertex, f.w1, f.w2);
+    c.onReference = vertex;
+    c.onIncident = lerp(f.w1, f.w2, toVertex.t);
+    c.incidentFeature = toVertex.feature2;
+  }
+  c.distance = distance(c.onReference, c.onIncident);
+  return c;
+}
+
+/// One contact point from the cores' closest points (the rounded corner or end of the
+/// reference shape against the incident shape): its separation is their distance less the
+/// radii, exactly, and the normal is along the line between them (the face normal where they
+/// are too close for a direction). None beyond reach.
+void pointContact(const CoreClosest& c, const FacePair& f, float tolerance, const Transform2f& xfA,
+                  const Transform2f& xfB, Manifold& m) {
+  const float separation = c.distance - f.rRef - f.rInc;
+  if (separation > speculativeDistance) {
+    return;
+  }
+  const Vec2f dir = c.distance > tolerance ? (c.onIncident - c.onReference) / c.distance : f.n; // to the incident
+  m.normal = rotate(xfA.q, f.flip ? -dir : dir);
+  setPoint(m.points[0], transformPoint(xfA, lerp(c.onReference + dir * f.rRef, c.onIncident - dir * f.rInc, 0.5f)),
+           separation, featureId(c.referenceVertex == 0 ? f.edge : f.edgeNext, 10 + c.incidentFeature, f.flip), xfA,
+           xfB);
+  m.pointCount = 1;
+}
+
+/// Cores apart: the closest points, from the best face (the greater separation, without the
+/// reference face's hysteresis) and its incident edge, which hold them: in the Minkowski
+/// difference B - A the origin is nearest to an edge, whose separation is then the distance
+/// and the greatest, or to a vertex, and the edge of greatest separation is one of the two at
+/// that vertex (any other's normal is farther from the direction to the origin); either way
+/// the closest points are on that edge's face and on the incident edge, whose end is the other
+/// polygon's support point against the face's normal. (The reference face within the
+/// hysteresis may be another face: a segment's, while the closest points were a vertex of it
+/// and a polygon's face.)
+struct Apart {
+  FacePair best;
+  float tolerance;
+};
+
+/// True when the cores' closest points are a vertex contact (beyond the best face's side
+/// planes): then `m` is that contact (or none, beyond reach). Where the incident edge reaches
+/// over the face (an end over it, or one beyond each side plane) and no end beyond a side plane
+/// lies lower along n than the other end, the edge rises (or stays level) from the plane out,
+/// and its points out there are farther from the face's end vertex than their height, which is
+/// at least the height at the plane: the closest point is over the face, a face contact, found
+/// without the closest points (a face resting on a face: the common case). An end that falls
+/// away below the other by a slope s (height per length along the face) from a height h has
+/// its closest point at most h s beyond the plane: within the side tolerance, a face contact too.
+[[gnu::always_inline]] inline bool vertexContact(const Apart& apart, const Transform2f& xfA, const Transform2f& xfB,
+                                                 Manifold& m) {
+  const FacePair& f = apart.best;
+  const float tolerance = apart.tolerance;
+  const Vec2f tangent{-f.n.y, f.n.x};
+  const float length = dot(tangent, f.v2 - f.v1);
+  const float along1 = dot(tangent, f.w1 - f.v1);
+  const float along2 = dot(tangent, f.w2 - f.v1);
+  const bool over1 = along1 >= -tolerance && along1 <= length + tolerance;
+  const bool over2 = along2 >= -tolerance && along2 <= length + tolerance;
+  if (std::min(along1, along2) <= length + tolerance && std::max(along1, along2) >= -tolerance) {
+    const float h1 = dot(f.n, f.w1 - f.v1);
+    const float h2 = dot(f.n, f.w2 - f.v1);
+    const float run = std::abs(along1 - along2);
+    const float highest = std::max(h1, h2);
+    const auto falls = [&](float hEnd, float hOther) { return (hOther - hEnd) * highest > tolerance * run; };
+    if ((over1 || !falls(h1, h2)) && (over2 || !falls(h2, h1))) {
+      return false;
+    }
+  }
+  const CoreClosest closest = coreClosest(f, tolerance);
+  if (closest.beyond > tolerance) {
+    pointContact(closest, f, tolerance, xfA, xfB, m);
     return true;
   }
-  const Vec2f dir = (pInc - pRef) / dist; // reference to incident
-  m.normal = rotate(xfA.q, flip ? -dir : dir);
-  setPoint(m.points[0], transformPoint(xfA, lerp(pRef + dir * rRef, pInc - dir * rInc, 0.5f)), separation,
-           featureId(sc.s == 0.0f ? edge : edgeNext, 10 + (sc.t == 0.0f ? 0 : 1), flip), xfA, xfB);
-  m.pointCount = 1;
+  return false;
+}
+
+/// Apart's best face pair, from the two separating-axis searches' results.
+[[gnu::always_inline]] inline Apart apartFaces(const PolygonView& a, int countA, float radiusA, const PolygonView& pb,
+                                               int countB, float radiusB, const EdgeSeparation& sa,
+                                               const EdgeSeparation& sb) {
+  Apart apart{sb.separation > sa.separation ? facePair(pb, countB, radiusB, a, countA, radiusA, sb.edge, true)
+                                            : facePair(a, countA, radiusA, pb, countB, radiusB, sa.edge, false),
+              0.0f};
+  apart.tolerance = sideTolerance(apart.best.v1, apart.best.v2, apart.best.w1, apart.best.w2);
+  return apart;
+}
+
+/// A face clip that found the incident edge wholly beyond a side plane while the cores are
+/// apart: the closest points are over the best face (the reference face within the hysteresis is
+/// another one, or a rounding sent them there): the contact at them.
+void closestPointsContact(const Apart& apart, const Transform2f& xfA, const Transform2f& xfB, Manifold& m) {
+  pointContact(coreClosest(apart.best, apart.tolerance), apart.best, apart.tolerance, xfA, xfB, m);
+}
+
+/// The reference face: A's unless B's is clearly better (by 0.1 linearSlop: the hysteresis keeps
+/// the choice, and the contact's feature ids, from flickering between two nearly parallel faces
+/// of equal separation). With the cores apart, the hysteresis' face is kept only when it is
+/// nearly parallel to the best face (normals within 4.5 mrad of opposite: a face contact
+/// measured along it is then deeper by a factor 1 / cos of the angle, at most 1 + 1e-5);
+/// otherwise the best face is taken: its closest points are over it (a face contact), and a
+/// face at an angle to it clipped the incident edge far from them (a capsule's side within the
+/// hysteresis of a segment's face, 76 degrees apart, was 1.4 mm off).
+[[gnu::always_inline]] inline bool referenceIsB(const Vec2f& normalA, const Vec2f& normalB, const EdgeSeparation& sa,
+                                                const EdgeSeparation& sb, const Apart* apart) {
+  const bool flip = sb.separation > sa.separation + 0.1f * linearSlop;
+  if (apart == nullptr || flip == apart->best.flip || dot(normalA, normalB) < -(1.0f - 1e-5f)) {
+    return flip;
+  }
+  return apart->best.flip;
+}
+
+/// Clips the incident edge `clip` (feature ids `clipId`) to one side plane of the reference
+/// face, given each end's distance beyond the plane (d0, d1; > 0 beyond). An end beyond by more
+/// than `tolerance` moves onto the plane along the edge and becomes the plane's feature
+/// (`planeId`), unless that lands it within the tolerance of the other end (that end is at the
+/// plane, or beyond it within the tolerance): then both are the other end, one point (two there
+/// would be one contact counted twice). False when both ends are beyond by more than the
+/// tolerance: then the edge is left as it was, and the caller decides (a face clip would have
+/// no point).
+[[gnu::always_inline]] inline bool clipToPlane(std::array<Vec2f, 2>& clip, std::array<int, 2>& clipId, float d0,
+                                               float d1, float tolerance, int planeId) {
+  if (d0 > tolerance && d1 > tolerance) {
+    return false;
+  }
+  const auto moveOntoPlane = [&](std::size_t moved, float dMoved, float dKept) {
+    const std::size_t kept = 1 - moved;
+    const Vec2f onPlane = clip[moved] + (clip[kept] - clip[moved]) * (dMoved / (dMoved - dKept));
+    if (dKept > 0.0f || lengthSquared(onPlane - clip[kept]) <= tolerance * tolerance) {
+      clip[moved] = clip[kept];
+      clipId[moved] = clipId[kept];
+    } else {
+      clip[moved] = onPlane;
+      clipId[moved] = planeId;
+    }
+  };
+  if (d0 > tolerance) {
+    moveOntoPlane(0, d0, d1);
+  } else if (d1 > tolerance) {
+    moveOntoPlane(1, d1, d0);
+  }
   return true;
 }
 
@@ -166,73 +386,60 @@ template <int CountA, int CountB> void clipContact(const PolygonView& a, float r
                                                    const Transform2f& xfA, const Transform2f& xfB, Manifold& m) {
   const int countA = CountA > 0 ? CountA : a.count;
   const int countB = CountB > 0 ? CountB : pb.count;
-  // Prefer A's face unless B's is clearly better (hysteresis keeps the choice stable).
-  const bool flip = sb.separation > sa.separation + 0.1f * linearSlop;
-  const PolygonView& reference = flip ? pb : a;
-  const PolygonView& incident = flip ? a : pb;
-  const int referenceCount = flip ? countB : countA;
-  const int incidentCount = flip ? countA : countB;
-  const int edge = flip ? sb.edge : sa.edge;
-  const int edgeNext = edge + 1 < referenceCount ? edge + 1 : 0;
-  const float rRef = flip ? radiusB : radiusA;
-  const float rInc = flip ? radiusA : radiusB;
-  const Vec2f v1 = reference.vertices[edge];
-  const Vec2f v2 = reference.vertices[edgeNext];
-  const Vec2f n = reference.normals[edge];
-  // Incident edge: the one most anti-parallel to the reference normal.
-  int incidentEdge = 0;
-  float minDot = std::numeric_limits<float>::max();
-  for (int i = 0; i < incidentCount; ++i) {
-    const float d = dot(n, incident.normals[i]);
-    if (d < minDot) {
-      minDot = d;
-      incidentEdge = i;
+  // Cores apart: a positive separation on either side's best axis (the separating-axis test
+  // is complete for convex polygons, 2-vertex ones included), or two segments, whose face
+  // normals miss the axis along them (capsules end to end on one line have a separation of 0
+  // on every face, and their ends may still be apart). Then the closest points decide; beyond
+  // the side planes of the best face they are a vertex contact, one point along the line
+  // between them (see Apart).
+  const bool coresApart = std::max(sa.separation, sb.separation) > 0.0f || (countA == 2 && countB == 2);
+  Apart apart{};
+  if (coresApart) {
+    apart = apartFaces(a, countA, radiusA, pb, countB, radiusB, sa, sb);
+    if (vertexContact(apart, xfA, xfB, m)) {
+      return;
     }
   }
-  const int i1 = incidentEdge;
-  const int i2 = incidentEdge + 1 < incidentCount ? incidentEdge + 1 : 0;
-  std::array<Vec2f, 2> clip{incident.vertices[i1], incident.vertices[i2]};
-  std::array<int, 2> clipId{i1, i2};
-  // Clip the incident edge to the reference face's side planes.
-  // The edge's direction: the outward normal of a counter-clockwise edge is (t.y, -t.x).
-  const Vec2f tangent{-n.y, n.x};
+  const bool flip = referenceIsB(a.normals[sa.edge], pb.normals[sb.edge], sa, sb, coresApart ? &apart : nullptr);
+  const FacePair f = flip ? facePair(pb, countB, radiusB, a, countA, radiusA, sb.edge, true)
+                          : facePair(a, countA, radiusA, pb, countB, radiusB, sa.edge, false);
+  const float tolerance = sideTolerance(f.v1, f.v2, f.w1, f.w2);
+  // Clip the incident edge to the reference face's side planes. A clipped point is a new
+  // feature: the reference face's side plane (ids 8 and 9).
+  std::array<Vec2f, 2> clip{f.w1, f.w2};
+  std::array<int, 2> clipId{f.i1, f.i2};
+  const Vec2f tangent{-f.n.y, f.n.x};
   const auto clipTo = [&](float offsetAlong, float sign) {
     // Keep the part where sign * (dot(tangent, p) - offsetAlong) <= 0.
     const float d0 = sign * (dot(tangent, clip[0]) - offsetAlong);
     const float d1 = sign * (dot(tangent, clip[1]) - offsetAlong);
-    if (d0 > 0.0f && d1 > 0.0f) {
-      return false;
-    }
-    // A clipped point is a new feature: the reference face's side plane (ids 8 and 9).
-    const int planeId = sign < 0.0f ? 8 : 9;
-    if (d0 > 0.0f) {
-      clip[0] = clip[0] + (clip[1] - clip[0]) * (d0 / (d0 - d1));
-      clipId[0] = planeId;
-    } else if (d1 > 0.0f) {
-      clip[1] = clip[1] + (clip[0] - clip[1]) * (d1 / (d1 - d0));
-      clipId[1] = planeId;
-    }
-    return true;
+    return clipToPlane(clip, clipId, d0, d1, tolerance, sign < 0.0f ? 8 : 9);
   };
-  // Cores apart (see cornerContact).
-  const float coreSeparation = flip ? sb.separation : sa.separation;
-  if (coreSeparation > 0.1f * linearSlop &&
-      cornerContact(v1, v2, clip[0], clip[1], rRef, rInc, edge, edgeNext, flip, xfA, xfB, m)) {
-    return;
+  if (!clipTo(dot(tangent, f.v1), -1.0f) || !clipTo(dot(tangent, f.v2), 1.0f)) {
+    // The incident edge lies wholly beyond a side plane. Apart, the closest points are over the
+    // best face: take them (the reference face within the hysteresis is another one, or it is
+    // a rounding away from the vertex contact). Overlapping (a sliver against a short face),
+    // the edge's ends as they are, each at its depth along n: the deeper is the incident
+    // shape's deepest point along n (the edge is the most anti-parallel one), so the contact
+    // has the separating-axis depth (a clip that returned no point let the shapes pass
+    // through each other).
+    if (coresApart) {
+      closestPointsContact(apart, xfA, xfB, m);
+      return;
+    }
+    clip = {f.w1, f.w2};
+    clipId = {f.i1, f.i2};
   }
-  if (!clipTo(dot(tangent, v1), -1.0f) || !clipTo(dot(tangent, v2), 1.0f)) {
-    return;
-  }
-  m.normal = rotate(xfA.q, flip ? -n : n);
+  m.normal = rotate(xfA.q, flip ? -f.n : f.n);
   const auto clipPoint = [&](std::size_t k) {
     const Vec2f p = clip[k];
-    const float core = dot(n, p - v1);
+    const float core = dot(f.n, p - f.v1);
     // Surface points: on the incident shape (p pulled back by its radius) and on the reference
     // face (pushed out by its radius); the contact point is midway.
-    const Vec2f onIncident = p - n * rInc;
-    const Vec2f onReference = p - n * (core - rRef);
-    return ClipPoint{transformPoint(xfA, lerp(onIncident, onReference, 0.5f)), core - rRef - rInc,
-                     featureId(edge, clipId[k], flip)};
+    const Vec2f onIncident = p - f.n * f.rInc;
+    const Vec2f onReference = p - f.n * (core - f.rRef);
+    return ClipPoint{transformPoint(xfA, lerp(onIncident, onReference, 0.5f)), core - f.rRef - f.rInc,
+                     featureId(f.edge, clipId[k], flip)};
   };
   storePoints(clipPoint(0), clipPoint(1), xfA, xfB, m);
 }
@@ -466,7 +673,7 @@ struct BoxInA {
 };
 
 /// collideBoxes with A's face `sa.edge` as the reference: clipContact in that face's frame.
-template <int Face> void clipOnFaceOfA(const Polygon& a, const BoxInA& boxB, float separationA, const Transform2f& xfA,
+template <int Face> void clipOnFaceOfA(const Polygon& a, const BoxInA& boxB, const Apart* apart, const Transform2f& xfA,
                                        const Transform2f& xfB, Manifold& m) {
   constexpr int edge = Face;
   constexpr int edgeNext = (Face + 1) & 3;
@@ -480,10 +687,7 @@ template <int Face> void clipOnFaceOfA(const Polygon& a, const BoxInA& boxB, flo
   const Vec2f v2 = a.vertices[static_cast<std::size_t>(edgeNext)];
   const Vec2f w1 = boxB.corner(incident);
   const Vec2f w2 = boxB.corner(incidentNext);
-  if (separationA > 0.1f * linearSlop &&
-      cornerContact(v1, v2, w1, w2, 0.0f, 0.0f, edge, edgeNext, false, xfA, xfB, m)) {
-    return;
-  }
+  const float tolerance = sideTolerance(v1, v2, w1, w2);
   const Vec2f r1 = f::to(v1);
   const Vec2f r2 = f::to(v2);
   std::array<Vec2f, 2> clip{f::to(w1), f::to(w2)};
@@ -492,20 +696,15 @@ template <int Face> void clipOnFaceOfA(const Polygon& a, const BoxInA& boxB, flo
   const auto clipTo = [&](float offsetAlong, float sign, int planeId) {
     const float d0 = sign * (clip[0].x - offsetAlong);
     const float d1 = sign * (clip[1].x - offsetAlong);
-    if (d0 > 0.0f && d1 > 0.0f) {
-      return false;
-    }
-    if (d0 > 0.0f) {
-      clip[0] = clip[0] + (clip[1] - clip[0]) * (d0 / (d0 - d1));
-      clipId[0] = planeId;
-    } else if (d1 > 0.0f) {
-      clip[1] = clip[1] + (clip[0] - clip[1]) * (d1 / (d1 - d0));
-      clipId[1] = planeId;
-    }
-    return true;
+    return clipToPlane(clip, clipId, d0, d1, tolerance, planeId);
   };
   if (!clipTo(r1.x, -1.0f, 8) || !clipTo(r2.x, 1.0f, 9)) {
-    return;
+    if (apart != nullptr) {
+      closestPointsContact(*apart, xfA, xfB, m);
+      return;
+    }
+    clip = {f::to(w1), f::to(w2)};
+    clipId = {incident, incidentNext};
   }
   m.normal = f::rotatedNormal(xfA.q);
   // Unrounded: the separation is the core distance, the incident point is p and the reference
@@ -521,8 +720,8 @@ template <int Face> void clipOnFaceOfA(const Polygon& a, const BoxInA& boxB, flo
 
 /// collideBoxes with B's face `sb.edge` as the reference: clipContact, with the products with
 /// A's normals (the axes) and with the radii (zero) folded.
-void clipOnFaceOfB(const Polygon& a, const BoxInA& boxB, const EdgeSeparation& sb, const Transform2f& xfA,
-                   const Transform2f& xfB, Manifold& m) {
+void clipOnFaceOfB(const Polygon& a, const BoxInA& boxB, const EdgeSeparation& sb, const Apart* apart,
+                   const Transform2f& xfA, const Transform2f& xfB, Manifold& m) {
   const int edge = sb.edge;
   const int edgeNext = (edge + 1) & 3;
   const Vec2f v1 = boxB.corner(edge);
@@ -531,31 +730,24 @@ void clipOnFaceOfB(const Polygon& a, const BoxInA& boxB, const EdgeSeparation& s
   // dot(n, A's normals (0, -1), (1, 0), (0, 1), (-1, 0)).
   const int incident = firstSmallest({-n.y, n.x, n.y, -n.x});
   const int incidentNext = (incident + 1) & 3;
-  std::array<Vec2f, 2> clip{a.vertices[static_cast<std::size_t>(incident)],
-                            a.vertices[static_cast<std::size_t>(incidentNext)]};
+  const Vec2f w1 = a.vertices[static_cast<std::size_t>(incident)];
+  const Vec2f w2 = a.vertices[static_cast<std::size_t>(incidentNext)];
+  const float tolerance = sideTolerance(v1, v2, w1, w2);
+  std::array<Vec2f, 2> clip{w1, w2};
   std::array<int, 2> clipId{incident, incidentNext};
-  if (sb.separation > 0.1f * linearSlop &&
-      cornerContact(v1, v2, clip[0], clip[1], 0.0f, 0.0f, edge, edgeNext, true, xfA, xfB, m)) {
-    return;
-  }
   const Vec2f tangent{-n.y, n.x};
   const auto clipTo = [&](float offsetAlong, float sign, int planeId) {
     const float d0 = sign * (dot(tangent, clip[0]) - offsetAlong);
     const float d1 = sign * (dot(tangent, clip[1]) - offsetAlong);
-    if (d0 > 0.0f && d1 > 0.0f) {
-      return false;
-    }
-    if (d0 > 0.0f) {
-      clip[0] = clip[0] + (clip[1] - clip[0]) * (d0 / (d0 - d1));
-      clipId[0] = planeId;
-    } else if (d1 > 0.0f) {
-      clip[1] = clip[1] + (clip[0] - clip[1]) * (d1 / (d1 - d0));
-      clipId[1] = planeId;
-    }
-    return true;
+    return clipToPlane(clip, clipId, d0, d1, tolerance, planeId);
   };
   if (!clipTo(dot(tangent, v1), -1.0f, 8) || !clipTo(dot(tangent, v2), 1.0f, 9)) {
-    return;
+    if (apart != nullptr) {
+      closestPointsContact(*apart, xfA, xfB, m);
+      return;
+    }
+    clip = {w1, w2};
+    clipId = {incident, incidentNext};
   }
   m.normal = rotate(xfA.q, -n);
   const auto clipPoint = [&](std::size_t k) {
@@ -619,22 +811,33 @@ void clipOnFaceOfB(const Polygon& a, const BoxInA& boxB, const EdgeSeparation& s
   if (sb.separation > speculativeDistance) {
     return;
   }
+  // clipContact's vertex contact for cores apart (boxes have area: their separating-axis test is
+  // complete), on the same floats: B's corners and normals are the general path's.
+  Apart apart{};
+  const bool coresApart = std::max(sa.separation, sb.separation) > 0.0f;
+  if (coresApart) {
+    apart = apartFaces(view(a), 4, 0.0f, {boxB.corners.data(), boxB.normals.data(), 4}, 4, 0.0f, sa, sb);
+    if (vertexContact(apart, xfA, xfB, m)) {
+      return;
+    }
+  }
+  const Apart* apartIf = coresApart ? &apart : nullptr;
   // clipContact's choice of reference face.
-  if (sb.separation > sa.separation + 0.1f * linearSlop) {
-    clipOnFaceOfB(a, boxB, sb, xfA, xfB, m);
+  if (referenceIsB(a.normals[static_cast<std::size_t>(sa.edge)], boxB.normal(sb.edge), sa, sb, apartIf)) {
+    clipOnFaceOfB(a, boxB, sb, apartIf, xfA, xfB, m);
   } else {
     switch (sa.edge) {
     case 0:
-      clipOnFaceOfA<0>(a, boxB, sa.separation, xfA, xfB, m);
+      clipOnFaceOfA<0>(a, boxB, apartIf, xfA, xfB, m);
       break;
     case 1:
-      clipOnFaceOfA<1>(a, boxB, sa.separation, xfA, xfB, m);
+      clipOnFaceOfA<1>(a, boxB, apartIf, xfA, xfB, m);
       break;
     case 2:
-      clipOnFaceOfA<2>(a, boxB, sa.separation, xfA, xfB, m);
+      clipOnFaceOfA<2>(a, boxB, apartIf, xfA, xfB, m);
       break;
     default:
-      clipOnFaceOfA<3>(a, boxB, sa.separation, xfA, xfB, m);
+      clipOnFaceOfA<3>(a, boxB, apartIf, xfA, xfB, m);
       break;
     }
   }
@@ -675,7 +878,9 @@ Manifold collideCircles(const Circle& a, const Transform2f& xfA, const Circle& b
   if (separation > speculativeDistance) {
     return m;
   }
-  m.normal = dist > 0.0f ? (pb - pa) / dist : Vec2f{0.0f, 1.0f};
+  // Centres closer than minNormalDistance have no direction between them (any normal is right
+  // for concentric circles): up.
+  m.normal = dist > minNormalDistance ? (pb - pa) / dist : Vec2f{0.0f, 1.0f};
   ManifoldPoint& mp = m.points[0];
   // Midway between the two surfaces along the normal.
   mp.point = lerp(pa + m.normal * a.radius, pb - m.normal * b.radius, 0.5f);
@@ -694,7 +899,7 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform2f& xfA, const
   if (a.count == 1) {
     const Vec2f d = c - a.vertices[0];
     const float len = length(d);
-    normal = len > 0.0f ? d / len : Vec2f{0.0f, 1.0f};
+    normal = len > minNormalDistance ? d / len : Vec2f{0.0f, 1.0f};
     separation = len - radius;
   } else {
     // The face of greatest separation; then, if the centre is beyond that face's ends, the
@@ -720,7 +925,9 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform2f& xfA, const
       const Vec2f vertex = u < 0.0f ? v1 : v2;
       const Vec2f d = c - vertex;
       const float len = length(d);
-      normal = len > 0.0f ? d / len : a.normals[static_cast<std::size_t>(face)];
+      // A centre on the vertex (within minNormalDistance): the face's normal, one of the
+      // directions of the vertex's region.
+      normal = len > minNormalDistance ? d / len : a.normals[static_cast<std::size_t>(face)];
       separation = len - radius;
     } else {
       normal = a.normals[static_cast<std::size_t>(face)];

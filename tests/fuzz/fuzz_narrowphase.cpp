@@ -12,7 +12,9 @@
 //    within speculativeDistance, at their true signed distance;
 //  - two polygons, capsules or segments overlapping by more than linearSlop: a contact (a
 //    missed one lets shapes sink through each other); when both have an area, no point deeper
-//    than the shapes' actual penetration (the solver would push them apart too hard);
+//    than the shapes' actual penetration (the solver would push them apart too hard); when
+//    their cores are apart, a point exactly when the shapes are within speculativeDistance, and
+//    the deepest at their true signed distance (in either order);
 //  - symmetry: A against B and B against A give the same number of points, the same
 //    separations and opposite normals. Exempt are the ties the algorithm resolves by the order
 //    (both faces within the 0.1 linearSlop hysteresis of collidePolygons, two candidate faces or
@@ -295,35 +297,20 @@ struct Pair {
   [[nodiscard]] std::string text() const { return std::string("A: ") + describe(a, xfA) + "; B: " + describe(b, xfB); }
 };
 
-/// Open finding (regressions/narrowphase/open-tiny-normal-circles): a normal taken along the line
-/// between two points closer than about 1e-19 m (squares underflow) is not of unit length: the
-/// narrowphase divides by a distance that is positive but inexact instead of treating it as 0.
-/// True when IMPETUS_FUZZ_SKIP_OPEN asks to let it pass and two core vertices are that close,
-/// in float world coordinates (as the narrowphase sees them) or in double.
-bool openTinyNormal(const Pair& p, const Core& a, const Core& b) {
-  if (!impetus::fuzz::skipOpenFindings()) {
+/// A normal taken along the line between two points closer than about 1e-19 m (their squares
+/// underflow) is not of unit length when the division is by that positive but inexact distance
+/// (regressions/narrowphase/tiny-normal-circles: collideCircles and collidePolygonAndCircle now
+/// take a defined normal below 1e-9 m). collideChainSegmentAndCircle (chain_manifold.cpp) still
+/// divides by any positive distance: true when IMPETUS_FUZZ_SKIP_OPEN asks to let that pass, a
+/// chain segment meets a circle, and a core vertex of one is that close to the other's.
+bool openChainTinyNormal(const Pair& p, const Core& a, const Core& b) {
+  if (!impetus::fuzz::skipOpenFindings() || !((p.a.kind == Kind::chain && p.b.kind == Kind::circle) ||
+                                              (p.b.kind == Kind::chain && p.a.kind == Kind::circle))) {
     return false;
   }
   for (const D& u : a.v) {
     for (const D& w : b.v) {
       if (len(u - w) < 1e-15) {
-        return true;
-      }
-    }
-  }
-  const auto vertices = [](const Shape& s, const Transform2f& xf) {
-    std::vector<Vec2f> v;
-    if (s.kind == Kind::circle) {
-      v.push_back(transformPoint(xf, s.circle.center));
-    }
-    for (int i = 0; s.kind != Kind::circle && i < s.polygon.count; ++i) {
-      v.push_back(transformPoint(xf, s.polygon.vertices[static_cast<std::size_t>(i)]));
-    }
-    return v;
-  };
-  for (const Vec2f& u : vertices(p.a, p.xfA)) {
-    for (const Vec2f& w : vertices(p.b, p.xfB)) {
-      if (std::abs(u.x - w.x) < 1e-15f && std::abs(u.y - w.y) < 1e-15f) {
         return true;
       }
     }
@@ -364,34 +351,15 @@ double deepest(const r2::Manifold& m) {
   return d;
 }
 
-/// The point was made by collidePolygons' corner path (feature id 10 or 11: a rounded corner
-/// against a rounded corner), not by clipping a face.
+/// The point was made by collidePolygons' vertex contact (feature ids 10 to 12: a reference
+/// face's end vertex against the incident edge's vertex or the edge between, the cores' closest
+/// points apart), not by clipping a face.
 bool cornerPoint(const r2::Manifold& m) { return m.pointCount == 1 && (m.points[0].id & 0xF) >= 10; }
-
-/// The open finding on corners and capsules in line (see checkPair): true when
-/// IMPETUS_FUZZ_SKIP_OPEN asks to let it pass and the pair is in its range: the cores do not
-/// overlap, and either the best face separation either way is within 0.1 linearSlop or the
-/// cores' closest points are two vertices (the corner path decides that by exact comparisons
-/// of the clamped segment parameters, and a parameter a rounding away from its end sends a
-/// corner-to-corner pair to the clipping, which drops it).
-bool openCornerFinding(const Pair& p, const Core& ca, const Core& cb, double coreDistance) {
-  if (!impetus::fuzz::skipOpenFindings() || coreDistance < -p.tolerance) {
-    return false;
-  }
-  const double best = std::max(faces(p.a, p.xfA, cb).best, faces(p.b, p.xfB, ca).best);
-  double vertexVertex = std::numeric_limits<double>::max();
-  for (const D& u : ca.v) {
-    for (const D& w : cb.v) {
-      vertexVertex = std::min(vertexVertex, len(u - w));
-    }
-  }
-  return best <= 0.1 * r2::linearSlop + p.tolerance || vertexVertex <= coreDistance + 1e-6 * p.scale;
-}
 
 void checkPair(const Pair& p) {
   const Core ca = core(p.a, p.xfA);
   const Core cb = core(p.b, p.xfB);
-  const bool tinyNormal = openTinyNormal(p, ca, cb);
+  const bool tinyNormal = openChainTinyNormal(p, ca, cb);
   const r2::Manifold ab = collide(p.a, p.xfA, p.b, p.xfB);
   checkValid(ab, p, "A, B", tinyNormal);
   const bool chain = p.a.kind == Kind::chain || p.b.kind == Kind::chain;
@@ -421,19 +389,36 @@ void checkPair(const Pair& p) {
     }
   } else {
     // Two polygons (capsules, segments): an overlap deeper than the slop has a contact.
-    // Open finding (regressions/narrowphase/open-corner-*, open-clip-*): collidePolygons clips
-    // the incident edge against the reference face's side planes and returns no contact when
-    // the edge lies wholly beyond one (Box2D keeps the unclipped end there). Its corner path
-    // catches that only when the cores are more than 0.1 linearSlop apart and their closest
-    // points are exactly two vertices, so rounded shapes that meet corner to corner or end to
-    // end (two capsules of radius 0.25 in line, 0.1 m apart; a capsule on a box's corner), or a
-    // sliver against a rounded face, overlap by up to their radii with no contact.
-    const bool openCorner = openCornerFinding(p, ca, cb, coreDistance) ||
-                            (impetus::fuzz::skipOpenFindings() && (ab.pointCount == 0 || ba.pointCount == 0));
-    FUZZ_CHECK(openCorner || signedDistance >= -r2::linearSlop || ab.pointCount > 0,
-               where() + ": overlapping, but no contact");
-    FUZZ_CHECK(openCorner || signedDistance >= -r2::linearSlop || ba.pointCount > 0,
+    // (regressions/narrowphase/corner-*, clip-*: the clip returned no point where the incident
+    // edge lay wholly beyond a side plane of the reference face, and the corner path ran only
+    // for cores more than 0.1 linearSlop apart whose closest points were exactly, by == on the
+    // clamped parameters, two vertices; two capsules of radius 0.25 in line, 0.1 m apart, a
+    // capsule on a box's corner, a sliver against a rounded face overlapped with no contact.)
+    FUZZ_CHECK(signedDistance >= -r2::linearSlop || ab.pointCount > 0, where() + ": overlapping, but no contact");
+    FUZZ_CHECK(signedDistance >= -r2::linearSlop || ba.pointCount > 0,
                where() + ": overlapping, but no contact (B, A)");
+    // Cores apart: their closest points decide, so each order has a point exactly when the
+    // shapes are within speculativeDistance, and its deepest point is at the true signed
+    // distance: a vertex contact along the line between the closest points, or a face contact
+    // whose point over the face is the incident shape's closest. Within the 0.1 linearSlop
+    // hysteresis of the reference face a face contact may be clipped on the other face where
+    // the two are nearly parallel (the separation along its normal is then within a factor
+    // 1 + 1e-5, and the face's own at most 0.1 linearSlop less).
+    if (coreDistance > tol) {
+      const bool hysteresis =
+          std::abs(faces(p.a, p.xfA, cb).best - faces(p.b, p.xfB, ca).best) <= 0.1 * r2::linearSlop + tol;
+      const double depthTolerance = hysteresis ? 0.1 * r2::linearSlop + tol : tol;
+      for (const r2::Manifold* m : {&ab, &ba}) {
+        const std::string order = m == &ab ? " (A, B)" : " (B, A)";
+        if (std::abs(signedDistance - r2::speculativeDistance) > depthTolerance) {
+          FUZZ_CHECK((m->pointCount > 0) == (signedDistance < r2::speculativeDistance),
+                     where() + ": cores apart, " + std::to_string(m->pointCount) + " points" + order +
+                         " (some exactly within speculativeDistance)");
+        }
+        FUZZ_CHECK(m->pointCount == 0 || std::abs(deepest(*m) - signedDistance) <= depthTolerance,
+                   where() + ": cores apart, the deepest point's separation is " + str(deepest(*m)) + order);
+      }
+    }
     // With area on both sides the separating-axis test is complete: no point deeper than the
     // penetration along the best axis, but for the 0.1 linearSlop hysteresis of the face choice.
     if (p.a.polygon.count >= 3 && p.b.polygon.count >= 3 && signedDistance < 0.0) {
@@ -452,8 +437,11 @@ void checkPair(const Pair& p) {
   if (!circles && !polygons) {
     return;
   }
-  if (circles && distance(transformPoint(p.xfA, p.a.circle.center), transformPoint(p.xfB, p.b.circle.center)) == 0.0f) {
-    return; // concentric: the normal is an arbitrary (0, 1) either way
+  // Concentric (within the narrowphase's 1e-9 m, minNormalDistance): the normal is an arbitrary
+  // (0, 1) either way.
+  if (circles &&
+      distance(transformPoint(p.xfA, p.a.circle.center), transformPoint(p.xfB, p.b.circle.center)) <= 1e-9f) {
+    return;
   }
   // The ties, where the order decides and either answer is right.
   bool tie = false;
@@ -470,19 +458,15 @@ void checkPair(const Pair& p) {
     tie = tie || fa.best - fa.second <= tol || fb.best - fb.second <= tol;
     tie = tie || incidentTie(p.b, p.xfB, fa.normal, 1e-4) || incidentTie(p.a, p.xfA, fb.normal, 1e-4);
     tie = tie || std::abs(std::max(fa.best, fb.best) - radius - r2::speculativeDistance) <= tol;
-    // The corner path (two rounded corners) against a clipped face near the border of their
-    // regions: one point or two, the same depth.
+    // A vertex contact against a clipped face near the border of their regions (the closest
+    // points within the side tolerance of a side plane in one order): one point or two, the
+    // same depth.
     tie = tie || cornerPoint(ab) || cornerPoint(ba);
-    // The open finding above: there either order may miss the contact or misjudge its depth.
-    if (openCornerFinding(p, ca, cb, coreDistance)) {
-      return;
-    }
   }
   if (ab.pointCount == 0 || ba.pointCount == 0) {
-    // Under IMPETUS_FUZZ_SKIP_OPEN a contact one order drops is the open clipping finding.
-    FUZZ_CHECK(tie || (polygons && impetus::fuzz::skipOpenFindings()) || ab.pointCount == ba.pointCount,
-               where() + ": " + std::to_string(ab.pointCount) + " points (A, B) but " + std::to_string(ba.pointCount) +
-                   " (B, A)");
+    FUZZ_CHECK(tie || ab.pointCount == ba.pointCount, where() + ": " + std::to_string(ab.pointCount) +
+                                                          " points (A, B) but " + std::to_string(ba.pointCount) +
+                                                          " (B, A)");
     return;
   }
   // In a tie the two answers are different faces' clips: the hysteresis allows 0.1 linearSlop

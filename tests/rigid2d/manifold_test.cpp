@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <random>
 #include <span>
 #include <vector>
@@ -79,6 +81,356 @@ TEST(Manifold, parallel_capsules_touch_along_a_segment) {
   EXPECT_NEAR(std::abs(m.normal.y), 1.0f, 1e-6f);
   EXPECT_NEAR(m.points[0].separation, -0.01f, 1e-5f);
   EXPECT_NEAR(m.points[1].separation, -0.01f, 1e-5f);
+}
+
+// A reference in double precision, in world coordinates: the signed distance between two
+// polygons' cores (2-vertex ones for capsules and segments) and its direction, computed apart
+// from the narrowphase. Apart, the distance is the least between a vertex of one and an edge of
+// the other (two segments that do not cross are closest at an end of one of them), and the
+// direction is the line between those points; overlapping, it is minus the depth along the best
+// separating axis: the edge normals of both and, for a segment, its direction both ways (the
+// axis two segments on one line need).
+struct DVec {
+  double x = 0.0;
+  double y = 0.0;
+};
+DVec operator-(DVec a, DVec b) { return {a.x - b.x, a.y - b.y}; }
+DVec operator+(DVec a, DVec b) { return {a.x + b.x, a.y + b.y}; }
+DVec operator*(DVec a, double s) { return {a.x * s, a.y * s}; }
+double dot(DVec a, DVec b) { return a.x * b.x + a.y * b.y; }
+double norm(DVec a) { return std::hypot(a.x, a.y); }
+
+struct CoreReference {
+  double signedDistance = 0.0; ///< of the cores; less both radii for the shapes'
+  DVec direction;              ///< unit, from A to B: the closest points' line, or the best axis
+};
+
+std::vector<DVec> worldCore(const Polygon& p, const Transform2f& xf) {
+  std::vector<DVec> v;
+  for (int i = 0; i < p.count; ++i) {
+    const Vec2f l = p.vertices[static_cast<std::size_t>(i)];
+    const double c = xf.q.c;
+    const double s = xf.q.s;
+    v.push_back({c * l.x - s * l.y + xf.p.x, s * l.x + c * l.y + xf.p.y});
+  }
+  return v;
+}
+
+CoreReference coreReference(const Polygon& a, const Transform2f& xfA, const Polygon& b, const Transform2f& xfB) {
+  const std::vector<DVec> va = worldCore(a, xfA);
+  const std::vector<DVec> vb = worldCore(b, xfB);
+  const auto edges = [](const std::vector<DVec>& v) {
+    std::vector<std::array<DVec, 2>> e;
+    for (std::size_t i = 0; i < (v.size() == 2 ? 1 : v.size()); ++i) {
+      e.push_back({v[i], v[(i + 1) % v.size()]});
+    }
+    return e;
+  };
+  // The best separating axis (from A to B).
+  CoreReference best{-1e300, {}};
+  for (const std::vector<DVec>* k : {&va, &vb}) {
+    for (const auto& e : edges(*k)) {
+      const DVec d = e[1] - e[0];
+      const double l = norm(d);
+      std::vector<DVec> axes{DVec{d.y / l, -d.x / l}, DVec{-d.y / l, d.x / l}};
+      if (k->size() == 2) {
+        axes.push_back(d * (1.0 / l));
+        axes.push_back(d * (-1.0 / l));
+      }
+      for (const DVec& u : axes) {
+        double maxA = -1e300;
+        double minB = 1e300;
+        for (const DVec& p : va) {
+          maxA = std::max(maxA, dot(u, p));
+        }
+        for (const DVec& q : vb) {
+          minB = std::min(minB, dot(u, q));
+        }
+        if (minB - maxA > best.signedDistance) {
+          best = {minB - maxA, u};
+        }
+      }
+    }
+  }
+  if (best.signedDistance <= 0.0) {
+    return best;
+  }
+  // Apart: the closest vertex-edge pair.
+  const auto closestOnSegment = [](DVec p, DVec e0, DVec e1) {
+    const DVec d = e1 - e0;
+    const double t = std::clamp(dot(p - e0, d) / dot(d, d), 0.0, 1.0);
+    return e0 + d * t;
+  };
+  CoreReference apart{1e300, {}};
+  const auto consider = [&](DVec onA, DVec onB) {
+    const double distance = norm(onB - onA);
+    if (distance < apart.signedDistance) {
+      apart = {distance, (onB - onA) * (1.0 / distance)};
+    }
+  };
+  for (const auto& ea : edges(va)) {
+    for (const auto& eb : edges(vb)) {
+      for (const DVec& p : ea) {
+        consider(p, closestOnSegment(p, eb[0], eb[1]));
+      }
+      for (const DVec& q : eb) {
+        consider(closestOnSegment(q, ea[0], ea[1]), q);
+      }
+    }
+  }
+  return apart;
+}
+
+float deepestSeparation(const Manifold& m) {
+  float d = std::numeric_limits<float>::max();
+  for (int i = 0; i < m.pointCount; ++i) {
+    d = std::min(d, m.points[static_cast<std::size_t>(i)].separation);
+  }
+  return d;
+}
+
+/// The manifold of A against B, and of B against A, against the reference: a point, the
+/// deepest at the signed distance (1e-5 m), a unit normal along the reference direction
+/// (1e-4), and B against A the same with the normal reversed.
+void expectReferenceContact(const Polygon& a, const Transform2f& xfA, const Polygon& b, const Transform2f& xfB) {
+  const CoreReference ref = coreReference(a, xfA, b, xfB);
+  const double expected = ref.signedDistance - a.radius - b.radius;
+  ASSERT_LT(expected, speculativeDistance);
+  const Manifold ab = collidePolygons(a, xfA, b, xfB);
+  const Manifold ba = collidePolygons(b, xfB, a, xfA);
+  ASSERT_GT(ab.pointCount, 0);
+  ASSERT_GT(ba.pointCount, 0);
+  EXPECT_NEAR(deepestSeparation(ab), expected, 1e-5);
+  EXPECT_NEAR(deepestSeparation(ba), expected, 1e-5);
+  EXPECT_NEAR(length(ab.normal), 1.0f, 1e-6f);
+  EXPECT_NEAR(length(ba.normal), 1.0f, 1e-6f);
+  EXPECT_NEAR(ab.normal.x, ref.direction.x, 1e-4);
+  EXPECT_NEAR(ab.normal.y, ref.direction.y, 1e-4);
+  EXPECT_NEAR(ba.normal.x, -ref.direction.x, 1e-4);
+  EXPECT_NEAR(ba.normal.y, -ref.direction.y, 1e-4);
+  for (const Manifold* m : {&ab, &ba}) {
+    for (int i = 0; i < m->pointCount; ++i) {
+      const ManifoldPoint& mp = m->points[static_cast<std::size_t>(i)];
+      EXPECT_TRUE(isFinite(mp.point) && std::isfinite(mp.separation));
+      EXPECT_LE(mp.separation, speculativeDistance);
+    }
+  }
+}
+
+// The fuzzer's finding 5 (docs/reliability.md; tests/fuzz/regressions/narrowphase/corner-*,
+// clip-*): where the incident edge lay wholly beyond a side plane of the reference face the clip
+// returned no point, and the corner path ran only for cores more than 0.1 linearSlop apart
+// whose closest points were exactly (== on clamped parameters) two vertices.
+TEST(Manifold, capsules_end_to_end_in_line_touch_along_the_line) {
+  // Radius 0.25, cores 0.1 m apart on the x axis: the rounded ends overlap by 0.4 m.
+  const Polygon a = asPolygon(Capsule{{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f});
+  const Polygon b = asPolygon(Capsule{{0.6f, 0.0f}, {1.5f, 0.0f}, 0.25f});
+  expectReferenceContact(a, at(0, 0), b, at(0, 0));
+  const Manifold m = collidePolygons(a, at(0, 0), b, at(0, 0));
+  ASSERT_EQ(m.pointCount, 1);
+  EXPECT_NEAR(m.points[0].separation, -0.4f, 1e-6f);
+  EXPECT_NEAR(m.normal.x, 1.0f, 1e-6f);
+  EXPECT_NEAR(m.points[0].point.x, 0.55f, 1e-6f); // midway between the two surfaces
+  // The same pair turned and moved, B's ends swapped, and nearly (1 mrad) in line.
+  expectReferenceContact(a, at(3.0f, -2.0f, 0.7f), asPolygon(Capsule{{1.5f, 0.0f}, {0.6f, 0.0f}, 0.25f}),
+                         at(3.0f, -2.0f, 0.7f));
+  expectReferenceContact(a, at(0, 0), b, {{0.0f, 0.0f}, Rot2f::fromAngle(1e-3f)});
+  // Cores touching (0.1 mm apart) and overlapping by 0.2 m end to end: still a contact.
+  expectReferenceContact(a, at(0, 0), b, at(-0.0999f, 0));
+  const Manifold overlapping = collidePolygons(a, at(0, 0), b, at(-0.3f, 0));
+  ASSERT_GT(overlapping.pointCount, 0);
+  EXPECT_LE(deepestSeparation(overlapping), -0.5f + 1e-5f);
+}
+
+TEST(Manifold, capsules_in_an_l_and_a_capsule_on_a_box_corner_touch_at_the_corner) {
+  // The fuzzer's inputs: a capsule along x whose end is 0.2 mm left of and 0.3 mm above the top
+  // of a capsule along -y, or the corner of a box below and right of it (cores 0.36 mm apart).
+  const Polygon horizontal = asPolygon(Capsule{{-0.5f, 0.0003f}, {-0.0002f, 0.0003f}, 0.1f});
+  const Polygon vertical = asPolygon(Capsule{{0.0f, 0.0f}, {0.0f, -0.4f}, 0.1f});
+  const Polygon box = makeOffsetBox(0.2f, 0.2f, {0.2f, -0.2f}, 0.0f);
+  expectReferenceContact(horizontal, at(0, 0), vertical, at(0, 0));
+  expectReferenceContact(horizontal, at(0, 0), box, at(0, 0));
+  const Manifold l = collidePolygons(horizontal, at(0, 0), vertical, at(0, 0));
+  ASSERT_EQ(l.pointCount, 1);
+  const double gap = std::hypot(0.0002, 0.0003);
+  EXPECT_NEAR(l.points[0].separation, gap - 0.2, 1e-6);
+  EXPECT_NEAR(l.normal.x, 0.0002 / gap, 1e-3); // the cores' line: 0.36 mm at float precision
+  EXPECT_NEAR(l.normal.y, -0.0003 / gap, 1e-3);
+  // Farther apart, turned, and resting on the corner with the capsule's rounded end 2 cm deep.
+  for (const Vec2f end : {Vec2f{-0.05f, 0.05f}, Vec2f{-0.03f, 0.09f}, Vec2f{-0.09f, 0.02f}}) {
+    const Polygon capsule = asPolygon(Capsule{end - Vec2f{0.6f, 0.0f}, end, 0.1f});
+    expectReferenceContact(capsule, at(1.0f, 2.0f, 0.3f), vertical, at(1.0f, 2.0f, 0.3f));
+    expectReferenceContact(capsule, at(1.0f, 2.0f, -2.0f), box, at(1.0f, 2.0f, -2.0f));
+    const Polygon tilted = asPolygon(Capsule{end, end + Vec2f{-0.5f, 0.3f}, 0.1f});
+    expectReferenceContact(tilted, at(0, 0), box, at(0, 0));
+    expectReferenceContact(tilted, at(0, 0), vertical, at(0, 0));
+  }
+}
+
+TEST(Manifold, a_sliver_inside_a_rounded_polygon_has_a_contact) {
+  // The fuzzer's input: a thin triangle (radius 0.3) whose incident edge lies below the lower
+  // end of the reference face of a hexagon of radius 1, overlapping it by 1.4 m.
+  const std::array<Vec2f, 6> hexagon{Vec2f{-0.988220453f, 1.015625f},    Vec2f{-0.936462104f, 0.0f},
+                                     Vec2f{-0.807843149f, -0.80784297f}, Vec2f{0.0f, -0.807843149f},
+                                     Vec2f{2.0f, -0.437499911f},         Vec2f{2.0f, 2.0f}};
+  const std::array<Vec2f, 3> sliver{Vec2f{1.98492444f, -0.0875478685f}, Vec2f{1.98854673f, -0.608499229f},
+                                    Vec2f{2.0f, 2.0f}};
+  const Polygon a = makePolygon(hexagon, 1.0f);
+  const Polygon b = makePolygon(sliver, 0.301960796f);
+  const Transform2f xfA{{-1.20784283f, 3.99859214f}, Rot2f{0.861115217f, -0.508409858f}};
+  const Transform2f xfB{{-1.47450948f, 3.73192549f}, Rot2f{0.861117184f, -0.508406579f}};
+  const CoreReference ref = coreReference(a, xfA, b, xfB);
+  const double expected = ref.signedDistance - a.radius - b.radius;
+  EXPECT_NEAR(expected, -1.41097784, 1e-6);
+  for (const bool swapped : {false, true}) {
+    const Manifold m = swapped ? collidePolygons(b, xfB, a, xfA) : collidePolygons(a, xfA, b, xfB);
+    ASSERT_GT(m.pointCount, 0) << swapped;
+    // Both sides' best faces are within the 0.1 linearSlop hysteresis of the reference face
+    // choice (the sliver's long edges are nearly parallel to the hexagon's face): A's face
+    // and B's may be taken, each at its own depth.
+    EXPECT_NEAR(deepestSeparation(m), expected, 0.1 * linearSlop) << swapped;
+    EXPECT_GE(deepestSeparation(m), expected - 0.1 * linearSlop - 1e-5) << swapped;
+    EXPECT_NEAR(length(m.normal), 1.0f, 1e-6f);
+    const Vec2f towardB = swapped ? -m.normal : m.normal;
+    EXPECT_GT(towardB.x * ref.direction.x + towardB.y * ref.direction.y, 0.999) << swapped;
+  }
+}
+
+// Found by the fuzzer while fixing finding 5: within the 0.1 linearSlop hysteresis the
+// reference face need not be the best face, and neither the closest points nor a fair clip
+// come from it.
+TEST(Manifold, apart_cores_within_the_face_hysteresis_touch_at_their_closest_points) {
+  // A segment's end 34 um from a triangle's face, the segment's own face (separation -0.1 mm,
+  // within the hysteresis of the triangle's +34 um) taken as the reference: the closest points
+  // (the segment's end, the triangle's face) are not on its incident edge, whose vertex is
+  // 88 um away.
+  const Polygon segment = asPolygon(Segment{{0.0f, 0.0f}, {0.120781235f, -8.80821026e-05f}});
+  const std::array<Vec2f, 3> corners{Vec2f{-0.0799999759f, -8.80147854e-05f}, Vec2f{-8.80807638e-05f, 0.0f},
+                                     Vec2f{0.119731449f, 0.05f}};
+  const Polygon triangle = makePolygon(corners, 0.0f);
+  expectReferenceContact(segment, at(0, 0), triangle, at(0, 0));
+  expectReferenceContact(segment, at(2.0f, 1.0f, 1.0f), triangle, at(2.0f, 1.0f, 1.0f));
+  // A capsule along x whose end is 0.45 mm from a tilted capsule's core (76 degrees to it):
+  // clipped on the first one's side (its separation 0, within the hysteresis of the second's
+  // 0.45 mm), the contact was 1.4 mm shallow.
+  const Polygon a = asPolygon(Capsule{{-0.500488281f, 0.0f}, {0.5f, 0.0f}, 0.25f});
+  const Polygon b = asPolygon(Capsule{{-0.500951469f, 0.0f}, {0.0f, 2.0f}, 0.999969482f});
+  expectReferenceContact(a, at(0, 0), b, at(0, 0));
+  expectReferenceContact(a, at(-3.0f, 4.0f, 2.5f), b, at(-3.0f, 4.0f, 2.5f));
+}
+
+// Capsules against capsules and boxes at random, within reach: where the cores are apart, the
+// deepest point is at the true signed distance (double precision) along the true direction;
+// where they overlap, there is a contact no deeper than the best axis' depth (less the 0.1
+// linearSlop hysteresis of the reference face).
+TEST(Manifold, capsule_and_box_pairs_match_the_double_reference) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * unit(rng); };
+  int apart = 0;
+  int overlapping = 0;
+  int vertexContacts = 0;
+  double worstSeparation = 0.0;
+  double worstNormal = 0.0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const auto capsule = [&] {
+      const float half = uniform(0.05f, 1.0f);
+      const float angle = uniform(-3.2f, 3.2f);
+      const Vec2f axis{half * std::cos(angle), half * std::sin(angle)};
+      const Vec2f center{uniform(-0.3f, 0.3f), uniform(-0.3f, 0.3f)};
+      return asPolygon(Capsule{center - axis, center + axis, uniform(0.01f, 0.4f)});
+    };
+    const Polygon a = capsule();
+    Polygon b;
+    switch (trial % 3) {
+    case 0:
+      b = capsule();
+      break;
+    case 1:
+      b = makeBox(uniform(0.05f, 1.0f), uniform(0.05f, 1.0f));
+      break;
+    default: {
+      const Polygon box =
+          makeOffsetBox(uniform(0.05f, 1.0f), uniform(0.05f, 1.0f), {uniform(-0.3f, 0.3f), 0.0f}, uniform(-1.0f, 1.0f));
+      b = makePolygon(std::span<const Vec2f>(box.vertices.data(), 4), uniform(0.0f, 0.2f));
+      break;
+    }
+    }
+    const Transform2f xfA{{uniform(-5, 5), uniform(-5, 5)}, Rot2f::fromAngle(uniform(-3.2f, 3.2f))};
+    // Now and then exactly in line with A (end to end, or at a box's face).
+    const float angleB = trial % 7 == 0 ? 0.0f : uniform(-3.2f, 3.2f);
+    const Transform2f xfB{transformPoint(xfA, {uniform(-2.5f, 2.5f), trial % 7 == 0 ? 0.0f : uniform(-2.5f, 2.5f)}),
+                          trial % 7 == 0 ? xfA.q : Rot2f::fromAngle(angleB)};
+    const CoreReference ref = coreReference(a, xfA, b, xfB);
+    const double expected = ref.signedDistance - a.radius - b.radius;
+    const Manifold ab = collidePolygons(a, xfA, b, xfB);
+    const Manifold ba = collidePolygons(b, xfB, a, xfA);
+    if (ref.signedDistance > 1e-4) {
+      if (std::abs(expected - speculativeDistance) < 1e-5) {
+        continue;
+      }
+      ASSERT_EQ(ab.pointCount > 0, expected < speculativeDistance) << trial;
+      ASSERT_EQ(ba.pointCount > 0, expected < speculativeDistance) << trial;
+      if (ab.pointCount == 0) {
+        continue;
+      }
+      ++apart;
+      vertexContacts += (ab.points[0].id & 0xF) >= 10 ? 1 : 0;
+      for (const Manifold* m : {&ab, &ba}) {
+        const double sign = m == &ab ? 1.0 : -1.0;
+        worstSeparation = std::max(worstSeparation, std::abs(deepestSeparation(*m) - expected));
+        worstNormal = std::max(worstNormal,
+                               std::hypot(m->normal.x - sign * ref.direction.x, m->normal.y - sign * ref.direction.y));
+        EXPECT_NEAR(deepestSeparation(*m), expected, 1e-5) << trial;
+        EXPECT_NEAR(m->normal.x, sign * ref.direction.x, 1e-3) << trial;
+        EXPECT_NEAR(m->normal.y, sign * ref.direction.y, 1e-3) << trial;
+      }
+    } else if (ref.signedDistance < -1e-4) {
+      ++overlapping;
+      for (const Manifold* m : {&ab, &ba}) {
+        ASSERT_GT(m->pointCount, 0) << trial;
+        EXPECT_GE(deepestSeparation(*m), expected - 0.1 * linearSlop - 1e-5) << trial;
+      }
+    }
+    if (HasFailure()) {
+      return;
+    }
+  }
+  std::printf("apart %d (vertex contacts %d), overlapping %d; apart: worst separation error %.3g m, normal %.3g\n",
+              apart, vertexContacts, overlapping, worstSeparation, worstNormal);
+  EXPECT_GT(apart, 1500);
+  EXPECT_GT(vertexContacts, 300);
+  EXPECT_GT(overlapping, 1500);
+}
+
+// The fuzzer's finding 7 (regressions/narrowphase/tiny-normal-circles): centres closer than
+// about 1e-19 m gave a "normal" of length 0.98 (the squared distance underflows). Below 1e-9 m
+// the normal is a defined one: (0, 1) for circles, the face's for a polygon's vertex.
+TEST(Manifold, normals_from_nearly_coincident_points_are_unit_vectors) {
+  const Circle tiny{{0.0f, 0.0f}, 0.001f};
+  const Circle nearby{{2.23535131e-41f, -6.36929072e-23f}, 0.001f};
+  const Manifold m = collideCircles(tiny, at(0, 2.27038377e-41f, 0.0588379f), nearby, at(0, 2.27038377e-41f));
+  ASSERT_EQ(m.pointCount, 1);
+  EXPECT_EQ(m.normal, (Vec2f{0.0f, 1.0f}));
+  EXPECT_NEAR(m.points[0].separation, -0.002f, 1e-9f);
+  for (const float d : {1e-30f, 1e-20f, 1e-12f, 1e-9f, 2e-9f, 1e-6f}) {
+    const float offset = std::sqrt(2.0f) * d; // the centres' distance
+    const Manifold c = collideCircles(Circle{{0, 0}, 0.5f}, at(0, 0), Circle{{0, 0}, 0.5f}, at(d, d));
+    ASSERT_EQ(c.pointCount, 1);
+    EXPECT_NEAR(length(c.normal), 1.0f, 1e-6f) << d;
+    EXPECT_NEAR(c.points[0].separation, offset - 1.0f, 1e-6f) << d;
+    // A circle centred on (or 1e-30 to 1e-6 m off) a box's corner, and on a capsule's end.
+    const Polygon box = makeBox(0.5f, 0.5f);
+    const Manifold corner = collidePolygonAndCircle(box, at(0, 0), Circle{{0, 0}, 0.1f}, at(0.5f + d, 0.5f + d));
+    ASSERT_EQ(corner.pointCount, 1);
+    EXPECT_NEAR(length(corner.normal), 1.0f, 1e-6f) << d;
+    EXPECT_NEAR(corner.points[0].separation, offset - 0.1f, 1e-6f) << d;
+    const Polygon capsule = asPolygon(Capsule{{-1.0f, 0.0f}, {0.0f, 0.0f}, 0.2f});
+    const Manifold end = collidePolygonAndCircle(capsule, at(0, 0), Circle{{0, 0}, 0.1f}, at(d, -d));
+    ASSERT_EQ(end.pointCount, 1);
+    EXPECT_NEAR(length(end.normal), 1.0f, 1e-6f) << d;
+    EXPECT_NEAR(end.points[0].separation, offset - 0.3f, 1e-6f) << d;
+  }
 }
 
 // Swapping A and B flips the normal and keeps the separations.
