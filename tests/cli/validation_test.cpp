@@ -676,4 +676,19 @@ TEST(CliValidation, calc_parameters_refuse_values_without_physical_meaning) {
   }
 }
 
+// Inputs valid one by one whose result overflows double, or that take an explicit method far
+// past its stability limit, are refused naming the output (the fuzzer's finding 8: they printed
+// inf and nan); a shell without drag has no terminal velocity, so none is printed.
+TEST(CliValidation, calc_refuses_results_that_are_not_finite) {
+  expectUsageError(impetus({"calc", "weight", "--mass", "1e308"}), "weight = inf");
+  expectUsageError(impetus({"calc", "inertia-solid-sphere", "--mass", "1e308", "--radius", "1e308"}), "= inf");
+  const CliRun unstable = impetus({"calc", "integrate-ship", "--mass", "1e-6"});
+  EXPECT_EQ(unstable.status, 2) << unstable.out;
+  EXPECT_NE(unstable.err.find("not finite"), std::string::npos) << unstable.err;
+  const CliRun noDrag = impetus({"calc", "cannon2", "--drag-coefficient", "0"});
+  EXPECT_EQ(noDrag.status, 0) << noDrag.err;
+  EXPECT_EQ(noDrag.out.find("terminal_velocity"), std::string::npos) << noDrag.out;
+  EXPECT_NE(noDrag.out.find("no terminal velocity"), std::string::npos) << noDrag.out;
+}
+
 } // namespace

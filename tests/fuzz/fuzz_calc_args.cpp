@@ -121,38 +121,7 @@ bool textValueFinite(const std::string& value) {
   return true;
 }
 
-/// Open findings (regressions/calc_args/open-*): no model checks that its outputs are finite,
-/// so about 40 of them print inf or nan for finite inputs that overflow (weight --mass 1e308,
-/// inertia-solid-sphere --radius 1e308, ...); and with moderate inputs cannon2 --drag-coefficient
-/// 0 prints an infinite terminal velocity and integrate-ship --mass 1e-6 (an explicit method far
-/// past its stability limit) prints nan. True when IMPETUS_FUZZ_SKIP_OPEN asks to let these pass
-/// and the command is one of them: an input number beyond 1e12 or below 1e-12 in magnitude, or one
-/// of those two models.
-bool openNonFinite(const std::string& model, const std::vector<std::string>& extra) {
-  if (!impetus::fuzz::skipOpenFindings()) {
-    return false;
-  }
-  if (model == "cannon2" || model == "integrate-ship") {
-    return true;
-  }
-  for (const std::string& token : extra) {
-    const std::string text =
-        token.rfind("--", 0) == 0 && token.find('=') != std::string::npos ? token.substr(token.find('=') + 1) : token;
-    std::string words = text;
-    std::replace(words.begin(), words.end(), ',', ' ');
-    std::istringstream in(words);
-    for (std::string w; in >> w;) {
-      char* end = nullptr;
-      const double v = std::strtod(w.c_str(), &end);
-      if (end != w.c_str() && std::isfinite(v) && (std::abs(v) > 1e12 || (v != 0.0 && std::abs(v) < 1e-12))) {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
-void checkResult(const Captured& c, bool asJson, const std::string& command, bool open) {
+void checkResult(const Captured& c, bool asJson, const std::string& command) {
   if (asJson) {
     json doc;
     try {
@@ -163,7 +132,7 @@ void checkResult(const Captured& c, bool asJson, const std::string& command, boo
     FUZZ_CHECK(doc.is_object() && doc.contains("outputs") && doc["outputs"].is_object(),
                command + ": no outputs in\n" + c.out);
     for (const auto& item : doc["outputs"].items()) {
-      FUZZ_CHECK(open || allFinite(item.value()["value"]),
+      FUZZ_CHECK(allFinite(item.value()["value"]),
                  command + ": output " + item.key() + " is not finite: " + item.value().dump());
     }
     return;
@@ -178,7 +147,7 @@ void checkResult(const Captured& c, bool asJson, const std::string& command, boo
     }
     const std::size_t eq = line.find(" = ");
     FUZZ_CHECK(eq != std::string::npos, command + ": unexpected result line '" + line + "'");
-    FUZZ_CHECK(open || textValueFinite(line.substr(eq + 3)), command + ": output not finite: '" + line + "'");
+    FUZZ_CHECK(textValueFinite(line.substr(eq + 3)), command + ": output not finite: '" + line + "'");
   }
 }
 
@@ -246,7 +215,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
   if (!list && !help) {
-    checkResult(c, jsonOut, command, openNonFinite(model, extra));
+    checkResult(c, jsonOut, command);
   }
   return 0;
 }

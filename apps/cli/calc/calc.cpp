@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <set>
 
 namespace impetus::cli {
@@ -262,6 +264,42 @@ const std::string& Args::text(const std::string& name) const {
   return it->second;
 }
 
+namespace {
+
+/// The first number of `value` that is not finite, if any.
+std::optional<double> firstNonFinite(const Value& value) {
+  std::optional<double> found;
+  const auto check = [&](double x) {
+    if (!found && !std::isfinite(x)) {
+      found = x;
+    }
+  };
+  if (const auto* x = std::get_if<double>(&value)) {
+    check(*x);
+  } else if (const auto* v = std::get_if<Vector>(&value)) {
+    std::for_each(v->begin(), v->end(), check);
+  } else if (const auto* m = std::get_if<Matrix>(&value)) {
+    for (const Vector& row : *m) {
+      std::for_each(row.begin(), row.end(), check);
+    }
+  }
+  return found;
+}
+
+/// A model's inputs may each be valid and still overflow double, or leave an explicit method past
+/// its stability limit: such a result is refused, naming the output, never printed as inf or nan.
+void requireFiniteOutputs(const Result& result) {
+  for (const Output& out : result.outputs) {
+    if (const std::optional<double> bad = firstNonFinite(out.value)) {
+      throwInvalid(out.name, *bad,
+                   "the result is not finite for these inputs (they overflow, or take the model outside its "
+                   "range)");
+    }
+  }
+}
+
+} // namespace
+
 int runCalc(bool list, bool json, const std::string& modelName, const std::vector<std::string>& extraArgs) {
   const Model* model = nullptr;
   try {
@@ -283,6 +321,7 @@ int runCalc(bool list, bool json, const std::string& modelName, const std::vecto
       return 0;
     }
     const Result result = model->evaluate(args);
+    requireFiniteOutputs(result);
     printResult(*model, args, result, json);
     return 0;
   } catch (const UsageError& e) {

@@ -104,7 +104,11 @@ Result cannon2(const Args& a) {
   }
   const ShellFlight flight(gun, a.number("mass"), air);
   Result r = shotResult(a, flight, gun);
-  r.add("terminal_velocity", toVector(flight.terminalVelocity()), "m/s");
+  if (air.dragCoefficient > 0.0) {
+    r.add("terminal_velocity", toVector(flight.terminalVelocity()), "m/s");
+  } else {
+    r.notes.emplace_back("no drag: the shell has no terminal velocity");
+  }
   if (air.windModel == WindModel::bookConstantForce) {
     r.notes.emplace_back("book's wind: a constant force -Cw vw that ignores the shell's velocity; "
                          "--wind-model moving-air applies the drag to the velocity relative to the air");
