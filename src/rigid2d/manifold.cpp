@@ -197,12 +197,16 @@ CoreClosest coreClosest(const FacePair& f, float tolerance) {
   c.onReference = lerp(f.v1, f.v2, sc.s);
   c.onIncident = lerp(f.w1, f.w2, sc.t);
   c.incidentFeature = sc.feature2;
-  // The face's direction: the outward normal of a counter-clockwise edge is (t.y, -t.x).
+  // The face's direction: the outward normal of a counter-clockwise edge is (t.y, -t.x). The
+  // distances beyond the side planes are the clip's, on the same floats: where the incident
+  // point is an end of the edge, this and the clip agree on which side of the tolerance it is
+  // (a steep edge an end of which the clip moved onto the plane went far out along n).
   const Vec2f tangent{-f.n.y, f.n.x};
-  const float along = dot(tangent, c.onIncident - f.v1);
-  const float length = dot(tangent, f.v2 - f.v1);
-  c.beyond = std::max(-along, along - length);
-  c.referenceVertex = along + along < length ? 0 : 1;
+  const float along = dot(tangent, c.onIncident);
+  const float beyondLower = dot(tangent, f.v1) - along;
+  const float beyondUpper = along - dot(tangent, f.v2);
+  c.beyond = std::max(beyondLower, beyondUpper);
+  c.referenceVertex = beyondLower > beyondUpper ? 0 : 1;
   if (c.beyond > tolerance) {
     const Vec2f vertex = c.referenceVertex == 0 ? f.v1 : f.v2;
     const SegmentClosest toVertex = segmentClosest(vertex, vertex, f.w1, f.w2);
@@ -259,13 +263,15 @@ struct Apart {
                                                  Manifold& m) {
   const FacePair& f = apart.best;
   const float tolerance = apart.tolerance;
+  // The ends' distances beyond the side planes, as the clip has them.
   const Vec2f tangent{-f.n.y, f.n.x};
-  const float length = dot(tangent, f.v2 - f.v1);
-  const float along1 = dot(tangent, f.w1 - f.v1);
-  const float along2 = dot(tangent, f.w2 - f.v1);
-  const bool over1 = along1 >= -tolerance && along1 <= length + tolerance;
-  const bool over2 = along2 >= -tolerance && along2 <= length + tolerance;
-  if (std::min(along1, along2) <= length + tolerance && std::max(along1, along2) >= -tolerance) {
+  const float lower = dot(tangent, f.v1);
+  const float upper = dot(tangent, f.v2);
+  const float along1 = dot(tangent, f.w1);
+  const float along2 = dot(tangent, f.w2);
+  const bool over1 = !(lower - along1 > tolerance) && !(along1 - upper > tolerance);
+  const bool over2 = !(lower - along2 > tolerance) && !(along2 - upper > tolerance);
+  if (!(std::min(along1, along2) - upper > tolerance) && !(lower - std::max(along1, along2) > tolerance)) {
     const float h1 = dot(f.n, f.w1 - f.v1);
     const float h2 = dot(f.n, f.w2 - f.v1);
     const float run = std::abs(along1 - along2);
@@ -920,8 +926,10 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform2f& xfA, const
     const float u = dot(c - v1, edge);
     // On or outside the face's plane and beyond one of its ends: the end vertex is the closest
     // feature. (">= 0", not "> 0": a centre on a segment's or capsule core's line, beyond its
-    // end, has a face separation of exactly 0 and got a phantom contact at any distance.)
-    if (faceSeparation >= 0.0f && (u < 0.0f || u > dot(edge, edge))) {
+    // end, has a face separation of exactly 0 and got a phantom contact at any distance.) A
+    // segment (2 vertices) has no inside: beyond an end, that end is the closest point whatever
+    // the sign (on its line far from the origin both faces' separations can round below 0).
+    if ((faceSeparation >= 0.0f || a.count == 2) && (u < 0.0f || u > dot(edge, edge))) {
       const Vec2f vertex = u < 0.0f ? v1 : v2;
       const Vec2f d = c - vertex;
       const float len = length(d);

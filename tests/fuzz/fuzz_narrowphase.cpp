@@ -302,7 +302,9 @@ struct Pair {
 /// (regressions/narrowphase/tiny-normal-circles: collideCircles and collidePolygonAndCircle now
 /// take a defined normal below 1e-9 m). collideChainSegmentAndCircle (chain_manifold.cpp) still
 /// divides by any positive distance: true when IMPETUS_FUZZ_SKIP_OPEN asks to let that pass, a
-/// chain segment meets a circle, and a core vertex of one is that close to the other's.
+/// chain segment meets a circle, and a core vertex of one is that close to the other's, in double
+/// or in float world coordinates (far from the origin points 1e-8 m apart round to one there,
+/// and the narrowphase sees them from its own frame a rounding apart).
 bool openChainTinyNormal(const Pair& p, const Core& a, const Core& b) {
   if (!impetus::fuzz::skipOpenFindings() || !((p.a.kind == Kind::chain && p.b.kind == Kind::circle) ||
                                               (p.b.kind == Kind::chain && p.a.kind == Kind::circle))) {
@@ -311,6 +313,23 @@ bool openChainTinyNormal(const Pair& p, const Core& a, const Core& b) {
   for (const D& u : a.v) {
     for (const D& w : b.v) {
       if (len(u - w) < 1e-15) {
+        return true;
+      }
+    }
+  }
+  const auto vertices = [](const Shape& s, const Transform2f& xf) {
+    std::vector<Vec2f> v;
+    if (s.kind == Kind::circle) {
+      v.push_back(transformPoint(xf, s.circle.center));
+    }
+    for (int i = 0; s.kind != Kind::circle && i < s.polygon.count; ++i) {
+      v.push_back(transformPoint(xf, s.polygon.vertices[static_cast<std::size_t>(i)]));
+    }
+    return v;
+  };
+  for (const Vec2f& u : vertices(p.a, p.xfA)) {
+    for (const Vec2f& w : vertices(p.b, p.xfB)) {
+      if (std::abs(u.x - w.x) < 1e-15f && std::abs(u.y - w.y) < 1e-15f) {
         return true;
       }
     }
@@ -449,6 +468,10 @@ void checkPair(const Pair& p) {
     for (int i = 0; i < m->pointCount; ++i) {
       tie = tie || std::abs(m->points[static_cast<std::size_t>(i)].separation - r2::speculativeDistance) <= tol;
     }
+    // Two points a rounding apart (an incident vertex just over a side plane of the reference
+    // face, and the edge clipped at that plane): the other order may have merged them into one,
+    // its side tolerance scaling with the coordinates in its own frame.
+    tie = tie || (m->pointCount == 2 && distance(m->points[0].point, m->points[1].point) <= tol);
   }
   if (polygons) {
     const FaceSeparation fa = faces(p.a, p.xfA, cb);

@@ -256,6 +256,13 @@ TEST(Manifold, capsules_in_an_l_and_a_capsule_on_a_box_corner_touch_at_the_corne
   EXPECT_NEAR(l.points[0].separation, gap - 0.2, 1e-6);
   EXPECT_NEAR(l.normal.x, 0.0002 / gap, 1e-3); // the cores' line: 0.36 mm at float precision
   EXPECT_NEAR(l.normal.y, -0.0003 / gap, 1e-3);
+  // Found by the fuzzer: a capsule along x starting 2.3 cm right of a 25.6 m box's corner, its
+  // start a rounding (38 um, the side tolerance there) above the box's top: the vertex test and
+  // the clip measured that distance in different roundings, and the clip moved the start along
+  // the capsule onto the plane, 0.75 m out, beyond reach.
+  expectReferenceContact(makeBox(12.7841587f, 12.784276f), at(1000.0f, -1000.0f),
+                         asPolygon(Capsule{{12.8076162f, 12.7843142f}, {19.9999809f, 12.7839546f}, 0.5f}),
+                         at(1000.0f, -1000.0f));
   // Farther apart, turned, and resting on the corner with the capsule's rounded end 2 cm deep.
   for (const Vec2f end : {Vec2f{-0.05f, 0.05f}, Vec2f{-0.03f, 0.09f}, Vec2f{-0.09f, 0.02f}}) {
     const Polygon capsule = asPolygon(Capsule{end - Vec2f{0.6f, 0.0f}, end, 0.1f});
@@ -401,6 +408,24 @@ TEST(Manifold, capsule_and_box_pairs_match_the_double_reference) {
   EXPECT_GT(apart, 1500);
   EXPECT_GT(vertexContacts, 300);
   EXPECT_GT(overlapping, 1500);
+}
+
+// Found by the fuzzer (regressions/narrowphase/circle-on-segment-axis-far-from-origin): a
+// circle on a segment's line, 3.9 cm beyond its end, 100 m from the origin: both faces'
+// separations rounded below 0 and the centre counted as over the segment (a contact at -1 mm
+// where the shapes are 3.8 cm apart).
+TEST(Manifold, a_circle_on_a_segments_line_beyond_its_end_is_at_the_end) {
+  const Polygon segment = asPolygon(Segment{{1.99999976f, 2.0f}, {0.0f, 0.0f}});
+  const Transform2f far{{100.0f, -100.0f}, Rot2f{}};
+  const Circle small{{-0.0274509806f, -0.0274509806f}, 0.00100011879f};
+  EXPECT_EQ(collidePolygonAndCircle(segment, far, small, far).pointCount, 0);
+  // Within reach: the end's distance, along the line.
+  const Circle near{{-0.01f, -0.01f}, 0.01f};
+  const Manifold m = collidePolygonAndCircle(segment, far, near, far);
+  ASSERT_EQ(m.pointCount, 1);
+  EXPECT_NEAR(m.points[0].separation, std::sqrt(2e-4) - 0.01, 1e-5);
+  EXPECT_NEAR(m.normal.x, -std::sqrt(0.5f), 1e-4f);
+  EXPECT_NEAR(m.normal.y, -std::sqrt(0.5f), 1e-4f);
 }
 
 // The fuzzer's finding 7 (regressions/narrowphase/tiny-normal-circles): centres closer than
