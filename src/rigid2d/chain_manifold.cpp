@@ -13,6 +13,8 @@
 // Everything is computed in the chain body's frame (A) and converted to world at the end.
 #include <impetus/rigid2d/chain.hpp>
 
+#include "rigid2d/manifold_internal.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -21,6 +23,8 @@
 
 namespace impetus::rigid2d {
 namespace {
+
+using detail::minNormalDistance;
 
 /// A turn whose sine is below this (about 0.57 degrees) is a flat seam, not a corner: slightly
 /// bent terrain stays ghost-free.
@@ -394,7 +398,10 @@ Manifold collideChainSegmentAndCircle(const ChainSegment& a, const Transform2f& 
   }
   if (v < 0.0f || u >= 0.0f) {
     dist = distance(c, onA);
-    normal = dist > 0.0f ? (c - onA) / dist : f.normal1;
+    // A centre on the corner (within minNormalDistance) has no direction from it: the segment's
+    // normal, one end of the corner's arc of normals. (Dividing by any positive distance gave a
+    // normal of length 1.0014 for a centre 1e-21 m from p2: its square underflows.)
+    normal = dist > minNormalDistance ? (c - onA) / dist : f.normal1;
   } else {
     // Over the segment: its own normal, exactly (no rounding drift across a flat seam).
     const float along = dot(f.tangent, c - f.p1);

@@ -14,6 +14,8 @@
 namespace impetus::rigid2d {
 namespace {
 
+using detail::minNormalDistance;
+
 void finishPoint(ManifoldPoint& mp, const Transform2f& xfA, const Transform2f& xfB) {
   mp.anchorA = mp.point - xfA.p;
   mp.anchorB = mp.point - xfB.p;
@@ -63,13 +65,6 @@ EdgeSeparation maxSeparation(const PolygonView& p1, const PolygonView& p2) {
 std::uint16_t featureId(int referenceEdge, int incidentVertex, bool flipped) {
   return static_cast<std::uint16_t>((flipped ? 0x8000 : 0) | (referenceEdge << 4) | incidentVertex);
 }
-
-/// Below this distance two points give no direction: a normal taken along the line between
-/// them is replaced by a defined one. 1e-9 m is under the spacing of floats at 1 cm (9.3e-10 m),
-/// so such points coincide within rounding at any coordinate the world resolves, and no
-/// direction is lost; and it is far above the distances whose squares underflow (about 1e-19 m,
-/// where the "normal" of a positive but inexact length was 2% off unit length).
-constexpr float minNormalDistance = 1e-9f;
 
 /// The closest points of segment p1-q1 (the reference face) and segment p2-q2 (the incident
 /// edge): parameters s on the first and t on the second, both in [0, 1] (Ericson, Real-Time

@@ -297,53 +297,16 @@ struct Pair {
   [[nodiscard]] std::string text() const { return std::string("A: ") + describe(a, xfA) + "; B: " + describe(b, xfB); }
 };
 
-/// A normal taken along the line between two points closer than about 1e-19 m (their squares
-/// underflow) is not of unit length when the division is by that positive but inexact distance
-/// (regressions/narrowphase/tiny-normal-circles: collideCircles and collidePolygonAndCircle now
-/// take a defined normal below 1e-9 m). collideChainSegmentAndCircle (chain_manifold.cpp) still
-/// divides by any positive distance: true when IMPETUS_FUZZ_SKIP_OPEN asks to let that pass, a
-/// chain segment meets a circle, and a core vertex of one is that close to the other's, in double
-/// or in float world coordinates (far from the origin points 1e-8 m apart round to one there,
-/// and the narrowphase sees them from its own frame a rounding apart).
-bool openChainTinyNormal(const Pair& p, const Core& a, const Core& b) {
-  if (!impetus::fuzz::skipOpenFindings() || !((p.a.kind == Kind::chain && p.b.kind == Kind::circle) ||
-                                              (p.b.kind == Kind::chain && p.a.kind == Kind::circle))) {
-    return false;
-  }
-  for (const D& u : a.v) {
-    for (const D& w : b.v) {
-      if (len(u - w) < 1e-15) {
-        return true;
-      }
-    }
-  }
-  const auto vertices = [](const Shape& s, const Transform2f& xf) {
-    std::vector<Vec2f> v;
-    if (s.kind == Kind::circle) {
-      v.push_back(transformPoint(xf, s.circle.center));
-    }
-    for (int i = 0; s.kind != Kind::circle && i < s.polygon.count; ++i) {
-      v.push_back(transformPoint(xf, s.polygon.vertices[static_cast<std::size_t>(i)]));
-    }
-    return v;
-  };
-  for (const Vec2f& u : vertices(p.a, p.xfA)) {
-    for (const Vec2f& w : vertices(p.b, p.xfB)) {
-      if (std::abs(u.x - w.x) < 1e-15f && std::abs(u.y - w.y) < 1e-15f) {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
-void checkValid(const r2::Manifold& m, const Pair& p, const std::string& order, bool tinyNormal) {
+/// A manifold's own validity. The normal is of unit length even between points closer than
+/// about 1e-19 m, whose squared distance underflows (regressions/narrowphase/tiny-normal-circles,
+/// tiny-normal-chain-circle: below 1e-9 m the narrowphase takes a defined normal instead).
+void checkValid(const r2::Manifold& m, const Pair& p, const std::string& order) {
   const auto where = [&] { return p.text() + " (" + order + ")"; };
   FUZZ_CHECK(m.pointCount >= 0 && m.pointCount <= 2, where() + ": " + std::to_string(m.pointCount) + " points");
   if (m.pointCount == 0) {
     return;
   }
-  FUZZ_CHECK(isFinite(m.normal) && (tinyNormal || std::abs(length(m.normal) - 1.0f) <= 1e-4f),
+  FUZZ_CHECK(isFinite(m.normal) && std::abs(length(m.normal) - 1.0f) <= 1e-4f,
              where() + ": normal " + str(m.normal) + " is not a unit vector");
   const Transform2f& xfA = order == "A, B" ? p.xfA : p.xfB;
   const Transform2f& xfB = order == "A, B" ? p.xfB : p.xfA;
@@ -378,12 +341,11 @@ bool cornerPoint(const r2::Manifold& m) { return m.pointCount == 1 && (m.points[
 void checkPair(const Pair& p) {
   const Core ca = core(p.a, p.xfA);
   const Core cb = core(p.b, p.xfB);
-  const bool tinyNormal = openChainTinyNormal(p, ca, cb);
   const r2::Manifold ab = collide(p.a, p.xfA, p.b, p.xfB);
-  checkValid(ab, p, "A, B", tinyNormal);
+  checkValid(ab, p, "A, B");
   const bool chain = p.a.kind == Kind::chain || p.b.kind == Kind::chain;
   const r2::Manifold ba = collide(p.b, p.xfB, p.a, p.xfA);
-  checkValid(ba, p, "B, A", tinyNormal);
+  checkValid(ba, p, "B, A");
   const double coreDistance = coreSignedDistance(ca, cb);
   const double signedDistance = coreDistance - ca.radius - cb.radius;
   const auto where = [&] { return p.text() + ": signed distance " + str(signedDistance); };

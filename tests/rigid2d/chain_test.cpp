@@ -366,6 +366,40 @@ TEST(Chain, circle_on_a_convex_corner_gets_the_vertex_normal_once) {
   EXPECT_NEAR(slope.points[0].separation, gap, lengthTolerance);
 }
 
+TEST(Chain, circle_centred_on_the_chain_gets_a_unit_normal_and_minus_its_radius) {
+  // fuzz regression narrowphase/tiny-normal-chain-circle: a centre 1e-21 m from a corner got a
+  // normal of length 1.0014 (the squared distance underflows: the division was by an inexact
+  // length). A centre on the chain, or within 1e-10 m of it (under the spacing of floats at 1 cm),
+  // is touching it at its centre: the separation is -radius, and the normal must still be a unit
+  // vector of the corner's arc, between the slope's normal (135 degrees) and up (90 degrees).
+  const std::vector<ChainSegment> chain = hill();
+  const float radius = 0.5f;
+  const Circle ball{{0, 0}, radius};
+  std::vector<Vec2f> centres{{0, 0}, {1, 0}, {1, 1e-10f}, {-1, -1}};
+  for (const float offset : {1e-10f, 1e-21f, 1e-30f, std::numeric_limits<float>::denorm_min()}) {
+    for (const float degrees : {90.0f, 100.0f, 112.5f, 135.0f}) {
+      centres.push_back(unitAt(degrees) * offset); // off the corner, within its arc
+    }
+  }
+  for (const Vec2f& c : centres) {
+    const std::vector<Manifold> ms = collideAll(
+        chain, [&](const ChainSegment& s) { return collideChainSegmentAndCircle(s, at(0, 0), ball, at(c.x, c.y)); });
+    ASSERT_EQ(ms.size(), 1u) << c.x << " " << c.y; // one segment reports
+    const Manifold& m = ms[0];
+    ASSERT_EQ(m.pointCount, 1);
+    ASSERT_TRUE(std::isfinite(m.normal.x) && std::isfinite(m.normal.y));
+    EXPECT_NEAR(length(m.normal), 1.0f, normalTolerance) << c.x << " " << c.y;
+    // In the arc: no more than 90 degrees from up and from the slope's normal (both >= 0 within
+    // a rounding).
+    EXPECT_GE(dot(m.normal, Vec2f{0, 1}), -normalTolerance);
+    EXPECT_GE(dot(m.normal, unitAt(135.0f)), -normalTolerance);
+    EXPECT_NEAR(m.points[0].separation, -radius, lengthTolerance) << c.x << " " << c.y;
+    // Midway between the chain (the centre) and the far side of the ball's surface along -normal.
+    EXPECT_TRUE(std::isfinite(m.points[0].point.x) && std::isfinite(m.points[0].point.y));
+    expectVec(m.points[0].point, c - m.normal * (0.5f * radius), lengthTolerance);
+  }
+}
+
 TEST(Chain, circle_across_a_flat_seam_keeps_the_surface_normal) {
   const std::vector<ChainSegment> ground = flatGround();
   const Circle ball{{0, 0}, 0.25f};
