@@ -5,6 +5,7 @@
 #include <impetus/rigid2d/geometry.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -72,10 +73,29 @@ CastOutput first(const CastOutput& a, const CastOutput& b) {
   return b.fraction < a.fraction ? b : a;
 }
 
-/// Polygon coordinates and rounding radii are bounded (maxPolygonCoordinate).
+/// Shape coordinates and radii are bounded (maxPolygonCoordinate).
 void requireCoordinate(float value, const std::string& field) {
   if (std::abs(value) > maxPolygonCoordinate) {
     throwInvalid(field, value, "must be within 1e6 m of the body origin (maxPolygonCoordinate)");
+  }
+}
+
+/// A point of a shape: finite, and each coordinate bounded (`field.x`, `field.y`).
+void requirePoint(const Vec2f& p, const std::string& field) {
+  requireFinite(p, field);
+  requireCoordinate(p.x, field + ".x");
+  requireCoordinate(p.y, field + ".y");
+}
+
+/// A radius: finite, positive (or, for a polygon's rounding, zero) and bounded.
+void requireRadius(float value, const std::string& field, bool zeroAllowed) {
+  if (zeroAllowed) {
+    requireNonNegative(value, field);
+  } else {
+    requirePositive(value, field);
+  }
+  if (value > maxPolygonCoordinate) {
+    throwInvalid(field, value, "must be at most 1e6 m (maxPolygonCoordinate)");
   }
 }
 
@@ -109,9 +129,7 @@ std::span<const Vec2f> computeHull(std::span<const Vec2f> points, std::array<Vec
   std::size_t n = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::string field = "points[" + std::to_string(i) + "]";
-    requireFinite(points[i], field);
-    requireCoordinate(points[i].x, field + ".x");
-    requireCoordinate(points[i].y, field + ".y");
+    requirePoint(points[i], field);
     // Weld points closer than linearSlop to one already kept: contact could not tell them apart.
     const Vec2d p{points[i].x, points[i].y};
     const bool duplicate = std::any_of(unique.begin(), unique.begin() + static_cast<std::ptrdiff_t>(n),
@@ -188,8 +206,7 @@ std::span<const Vec2f> computeHull(std::span<const Vec2f> points, std::array<Vec
 }
 
 Polygon makePolygon(std::span<const Vec2f> points, float radius) {
-  requireNonNegative(radius, "radius");
-  requireCoordinate(radius, "radius");
+  requireRadius(radius, "radius", true);
   std::array<Vec2f, 8> storage{};
   const std::span<const Vec2f> hull = computeHull(points, storage);
   Polygon p;
@@ -245,6 +262,107 @@ Polygon makeOffsetBox(float halfWidth, float halfHeight, const Vec2f& center, fl
     throwInvalid(thinner, thinnerValue, "too thin at this centre: float rounding welds corners");
   }
   return box;
+}
+
+void validateShape(const Circle& shape) {
+  requirePoint(shape.center, "center");
+  requireRadius(shape.radius, "radius", false);
+}
+
+void validateShape(const Capsule& shape) {
+  requirePoint(shape.center1, "center1");
+  requirePoint(shape.center2, "center2");
+  requireRadius(shape.radius, "radius", false);
+  if (const float gap = distance(shape.center1, shape.center2); gap <= linearSlop) {
+    throwInvalid("center2", gap, "capsule ends coincide: use a circle");
+  }
+}
+
+void validateShape(const Segment& shape) {
+  requirePoint(shape.point1, "point1");
+  requirePoint(shape.point2, "point2");
+  if (const float gap = distance(shape.point1, shape.point2); gap <= linearSlop) {
+    throwInvalid("point2", gap, "segment is too short");
+  }
+}
+
+void validateShape(const Polygon& shape) {
+  if (shape.count < 3 || shape.count > maxPolygonVertices) {
+    throwInvalid("polygon.count", shape.count, "must be 3 to 8 (build polygons with makePolygon or makeBox)");
+  }
+  const auto n = static_cast<std::size_t>(shape.count);
+  const auto vertexField = [](std::size_t i) { return "polygon.vertices[" + std::to_string(i) + "]"; };
+  const auto normalField = [](std::size_t i) { return "polygon.normals[" + std::to_string(i) + "]"; };
+  std::array<Vec2d, 8> v{};
+  double scale = 0.0; // the largest coordinate, m
+  for (std::size_t i = 0; i < n; ++i) {
+    requirePoint(shape.vertices[i], vertexField(i));
+    v[i] = {shape.vertices[i].x, shape.vertices[i].y};
+    scale = std::max({scale, std::abs(v[i].x), std::abs(v[i].y)});
+  }
+  requireRadius(shape.radius, "polygon.radius", true);
+  requireFinite(shape.centroid, "polygon.centroid");
+  for (std::size_t i = 0; i < n; ++i) {
+    requireFinite(shape.normals[i], normalField(i));
+    if (const float len = length(shape.normals[i]); std::abs(len - 1.0f) > 1e-3f) {
+      throwInvalid(normalField(i), len, "must be a unit vector (build polygons with makePolygon or makeBox)");
+    }
+  }
+  // What makePolygon guarantees, decided as computeHull decides it: in double on the float
+  // vertices (exact to 1e-9 m within the bound), so every polygon it returns passes.
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t next = (i + 1) % n;
+    const Vec2d edge = v[next] - v[i];
+    const double len = length(edge);
+    // Welded by makePolygon: contact could not tell the two vertices apart.
+    if (!(len >= static_cast<double>(linearSlop))) {
+      throwInvalid(vertexField(next), len,
+                   "is closer than linearSlop (0.005 m) to the vertex before it (build polygons with makePolygon)");
+    }
+    // The outward normal of edge i -> i+1 (its clockwise perpendicular, for a counter-clockwise
+    // polygon), to the same 1e-3 as the unit length.
+    const Vec2d outward = Vec2d{edge.y, -edge.x} / len;
+    const Vec2d normal{shape.normals[i].x, shape.normals[i].y};
+    if (const double off = length(normal - outward); !(off <= 1e-3)) {
+      throwInvalid(normalField(i), off,
+                   "is this far from the outward unit normal of edge " + std::to_string(i) + " -> " +
+                       std::to_string(next) + " (must be within 1e-3; build polygons with makePolygon or makeBox)");
+    }
+  }
+  // Strictly convex and counter-clockwise: every vertex more than linearSlop outside the line
+  // through its neighbours (computeHull's test, the same expression), and the turns add up to
+  // one revolution (all turns left but twice round is a star).
+  double turning = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2d& prev = v[(i + n - 1) % n];
+    const Vec2d& next = v[(i + 1) % n];
+    const Vec2d edge = next - prev;
+    const double len = length(edge);
+    const double offset = len > 0.0 ? cross(v[i] - prev, edge) / len : 0.0;
+    if (!(offset > static_cast<double>(linearSlop))) {
+      throwInvalid(vertexField(i), offset,
+                   "must lie more than linearSlop (0.005 m) outside the line through its neighbours, to its right: "
+                   "the polygon must be convex and counter-clockwise (build polygons with makePolygon)");
+    }
+    const Vec2d in = v[i] - prev;
+    const Vec2d out = next - v[i];
+    turning += std::atan2(cross(in, out), dot(in, out));
+  }
+  if (turning > 3.0 * pi<double>) {
+    throwInvalid("polygon.vertices", std::round(turning / (2.0 * pi<double>)),
+                 "turns this many times round: a convex polygon turns once (build polygons with makePolygon)");
+  }
+  // The centroid inside, within linearSlop and its float rounding (a quarter metre at 1e6 m).
+  const Vec2d c{shape.centroid.x, shape.centroid.y};
+  const double tolerance = static_cast<double>(linearSlop) + 4.0 * std::numeric_limits<float>::epsilon() * scale;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2d edge = v[(i + 1) % n] - v[i];
+    const double outside = cross(c - v[i], edge) / length(edge);
+    if (outside > tolerance) {
+      throwInvalid("polygon.centroid", outside,
+                   "lies this far outside edge " + std::to_string(i) + ": must be inside the polygon");
+    }
+  }
 }
 
 MassData computeMass(const Circle& shape, float density) {

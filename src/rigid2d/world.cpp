@@ -515,43 +515,22 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
 } // namespace
 
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) {
-  requireFinite(circle.center, "center");
-  requirePositive(circle.radius, "radius");
+  validateShape(circle);
   return addShape(*impl_, body, def, circle);
 }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Capsule& capsule) {
-  requireFinite(capsule.center1, "center1");
-  requireFinite(capsule.center2, "center2");
-  requirePositive(capsule.radius, "radius");
-  if (const float gap = distance(capsule.center1, capsule.center2); gap <= linearSlop) {
-    throwInvalid("center2", gap, "capsule ends coincide: use a circle");
-  }
+  validateShape(capsule);
   return addShape(*impl_, body, def, capsule);
 }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& polygon) {
-  if (polygon.count < 3 || polygon.count > maxPolygonVertices) {
-    throwInvalid("polygon.count", polygon.count, "build polygons with makePolygon or makeBox");
-  }
   // Polygon is a plain struct: one filled in by hand (or corrupted) would otherwise reach the
-  // broadphase and the narrowphase with NaN bounds or normals of no direction.
-  for (std::size_t i = 0; i < static_cast<std::size_t>(polygon.count); ++i) {
-    requireFinite(polygon.vertices[i], "polygon.vertices[" + std::to_string(i) + "]");
-    const std::string normal = "polygon.normals[" + std::to_string(i) + "]";
-    requireFinite(polygon.normals[i], normal);
-    if (const float len = length(polygon.normals[i]); std::abs(len - 1.0f) > 1e-3f) {
-      throwInvalid(normal, len, "must be a unit vector (build polygons with makePolygon or makeBox)");
-    }
-  }
-  requireFinite(polygon.centroid, "polygon.centroid");
-  requireNonNegative(polygon.radius, "polygon.radius");
+  // broadphase and the narrowphase with NaN bounds, normals of no direction, or a winding the
+  // separating-axis tests do not expect.
+  validateShape(polygon);
   return addShape(*impl_, body, def, polygon);
 }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segment) {
-  requireFinite(segment.point1, "point1");
-  requireFinite(segment.point2, "point2");
-  if (const float gap = distance(segment.point1, segment.point2); gap <= linearSlop) {
-    throwInvalid("point2", gap, "segment is too short");
-  }
+  validateShape(segment); // a segment has no mass
   return addShape(*impl_, body, def, segment);
 }
 

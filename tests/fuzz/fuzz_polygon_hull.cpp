@@ -12,7 +12,8 @@
 //    collinear-point removal may cut off a sliver that thin, no more);
 //  - the centroid inside; the mass data (computeMass at density 1) finite and positive with its
 //    centre inside; the bounding box finite and holding every vertex;
-//  - every vertex coordinate and the radius within maxPolygonCoordinate (1e6 m).
+//  - every vertex coordinate and the radius within maxPolygonCoordinate (1e6 m);
+//  - accepted by validateShape (World::createShape's check of a polygon built by hand).
 // A rounded polygon keeps the radius it was given; a negative or non-finite radius is an error.
 // A box has 4 vertices and half-widths of at least linearSlop.
 #include "fuzz_support.hpp"
@@ -131,6 +132,13 @@ void checkPolygon(const r2::Polygon& polygon, std::span<const Vec2f> input, floa
                where() + ": normal " + std::to_string(i) + " is not the outward perpendicular of its edge");
     FUZZ_CHECK(outside(vertices, i, d(polygon.centroid)) < eps,
                where() + ": centroid " + str(polygon.centroid) + " is outside edge " + std::to_string(i));
+  }
+  // World::createShape takes it: validateShape, which checks a polygon built by hand, accepts
+  // every polygon the makers return.
+  try {
+    r2::validateShape(polygon);
+  } catch (const impetus::Error& e) {
+    FUZZ_CHECK(false, where() + ": refused by validateShape (createShape would refuse it): " + e.what());
   }
   const r2::MassData mass = r2::computeMass(polygon, 1.0f);
   FUZZ_CHECK(std::isfinite(mass.mass) && mass.mass > 0.0f && std::isfinite(mass.rotationalInertia) &&

@@ -72,6 +72,22 @@ template <class Def> Def between(const Fixture& x) {
   return d;
 }
 
+/// A polygon filled in by hand: the vertices as given, each normal the clockwise perpendicular of
+/// its edge (outward when the vertices run counter-clockwise), the centroid the vertices' mean.
+Polygon byHand(const std::vector<Vec2f>& vertices) {
+  Polygon p;
+  p.count = static_cast<int>(vertices.size());
+  Vec2f sum;
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const Vec2f edge = vertices[(i + 1) % vertices.size()] - vertices[i];
+    p.vertices[i] = vertices[i];
+    p.normals[i] = normalize(Vec2f{edge.y, -edge.x});
+    sum += vertices[i];
+  }
+  p.centroid = sum / static_cast<float>(vertices.size());
+  return p;
+}
+
 TEST(Rigid2dValidation, world_def_and_step) {
   const auto def = [](auto change) {
     return [change] {
@@ -265,6 +281,60 @@ TEST(Rigid2dValidation, shapes) {
       {"polygon.centroid.x", "nan", polygon([](Polygon& p) { p.centroid.x = nanf; })},
       {"polygon.radius", "-1", polygon([](Polygon& p) { p.radius = -1.0f; })},
       {"polygon.radius", "inf", polygon([](Polygon& p) { p.radius = inff; })},
+      // Hand-built shapes are bounded by maxPolygonCoordinate (1e6 m), as the makers bound theirs.
+      {"center.x", formatValue(2e6), on([](Fixture& x) {
+         x.world.createShape(x.a, {}, Circle{{2e6f, 0.0f}, 1.0f});
+       })},
+      {"radius", formatValue(2e6), on([](Fixture& x) {
+         x.world.createShape(x.a, {}, Circle{{}, 2e6f});
+       })},
+      {"center1.y", formatValue(-3e7), on([](Fixture& x) {
+         x.world.createShape(x.a, {}, Capsule{{0, -3e7f}, {1, 0}, 0.5f});
+       })},
+      {"radius", formatValue(1.5e6), on([](Fixture& x) {
+         x.world.createShape(x.a, {}, Capsule{{0, 0}, {1, 0}, 1.5e6f});
+       })},
+      {"point2.x", formatValue(1e7), on([](Fixture& x) {
+         x.world.createShape(x.ground, {}, Segment{{0, 0}, {1e7f, 0}});
+       })},
+      {"polygon.vertices[2].x", formatValue(3e7), polygon([](Polygon& p) { p.vertices[2].x = 3e7f; })},
+      {"polygon.radius", formatValue(2e6), polygon([](Polygon& p) { p.radius = 2e6f; })},
+      // A hand-built polygon must be one makePolygon could return.
+      {"polygon.normals[1]", formatValue(std::sqrt(2.0)), polygon([](Polygon& p) { p.normals[1] = p.normals[0]; })},
+      {"polygon.normals[3]", formatValue(2.0), polygon([](Polygon& p) { p.normals[3] = -p.normals[3]; })},
+      {"polygon.vertices[0]", formatValue(-1.0 / std::sqrt(2.0)), on([](Fixture& x) { // clockwise
+         x.world.createShape(x.a, {}, byHand({{-0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, -0.5f}, {-0.5f, -0.5f}}));
+       })},
+      {"polygon.vertices[2]", formatValue(-2.0 / std::sqrt(8.0)), on([](Fixture& x) { // a dart: reflex at 2
+         x.world.createShape(x.a, {}, byHand({{0, 0}, {2, 0}, {0.5f, 0.5f}, {0, 2}}));
+       })},
+      {"polygon.vertices[1]", "0", on([](Fixture& x) { // a vertex on its neighbours' line
+         x.world.createShape(x.a, {}, byHand({{0, 0}, {1, 0}, {2, 0}, {2, 1}, {0, 1}}));
+       })},
+      {"polygon.vertices[2]", formatValue(static_cast<double>(0.001f)), on([](Fixture& x) { // welded vertices
+         x.world.createShape(x.a, {}, byHand({{0, 0}, {1, 0}, {1, 0.001f}, {0, 1}}));
+       })},
+      {"polygon.vertices", "2", on([](Fixture& x) { // a pentagram: every turn left, twice round
+         std::vector<Vec2f> star;
+         for (int k = 0; k < 5; ++k) {
+           const float a = 2.0f * 0.6283185f * static_cast<float>(2 * k); // every second point of a pentagon
+           star.push_back({std::cos(a), std::sin(a)});
+         }
+         x.world.createShape(x.a, {}, byHand(star));
+       })},
+      {"polygon.centroid", formatValue(4.5), polygon([](Polygon& p) {
+         p.centroid = {5.0f, 0.0f};
+       })},
+  });
+  expectAccepted({
+      {"shapes at the bound, and a polygon filled in by hand", on([](Fixture& x) {
+         const float b = maxPolygonCoordinate;
+         x.world.createShape(x.a, {}, Circle{{b, -b}, b});
+         x.world.createShape(x.a, {}, Capsule{{-b, b}, {b, b}, b});
+         x.world.createShape(x.ground, {}, Segment{{-b, -b}, {b, b}});
+         x.world.createShape(x.a, {}, makePolygon(std::vector<Vec2f>{{-b, -b}, {b, -b}, {b, b}, {-b, b}}, b));
+         x.world.createShape(x.a, {}, byHand({{0, 0}, {1, 0}, {0.5f, 1}}));
+       })},
   });
 }
 

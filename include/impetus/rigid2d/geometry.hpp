@@ -66,6 +66,22 @@ inline constexpr float maxPolygonCoordinate = 1.0e6f;
 /// float rounding far from the origin welds is refused naming its thinner half-width.
 [[nodiscard]] Polygon makeOffsetBox(float halfWidth, float halfHeight, const Vec2f& center, float angle);
 
+/// Checks a shape filled in by hand (the structs are plain; World::createShape calls these) and
+/// throws impetus::Error naming the field and its value where it is not a shape the makers would
+/// build. Every point finite and within maxPolygonCoordinate of the body origin (`center.x`,
+/// `point2.y`, `polygon.vertices[i].x`, ...); a circle's or capsule's `radius` finite, positive
+/// and at most maxPolygonCoordinate, a polygon's (`polygon.radius`) the same or 0; a capsule's or
+/// segment's ends more than linearSlop apart (`center2`, `point2`). A polygon as makePolygon
+/// returns it: 3 to 8 vertices (`polygon.count`), each at least linearSlop from the one before
+/// it and more than linearSlop outside the line through its neighbours (convex, counter-clockwise:
+/// `polygon.vertices[i]`), turning once round (`polygon.vertices`); `polygon.normals[i]` the
+/// outward unit normal of edge i -> i+1 to 1e-3; `polygon.centroid` finite and inside (within
+/// linearSlop and its rounding). Every polygon from makePolygon, makeBox or makeOffsetBox passes.
+void validateShape(const Circle& shape);
+void validateShape(const Capsule& shape);
+void validateShape(const Polygon& shape);
+void validateShape(const Segment& shape);
+
 /// Mass, centre of mass (local) and rotational inertia about the centre of mass.
 struct MassData {
   float mass = 0.0f;              ///< kg
