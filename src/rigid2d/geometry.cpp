@@ -99,6 +99,26 @@ void requireRadius(float value, const std::string& field, bool zeroAllowed) {
   }
 }
 
+/// Mass data a body can use: mass and inertia finite, and at least the smallest normal float
+/// (1.2e-38), so that their inverses are finite too. Only the density can take a bounded shape
+/// out of that range (at 1 kg/m^2 a 1e6 m square has inertia 2.7e24 kg m^2, float's limit is
+/// 3.4e38), so it is the density that is refused.
+MassData requireUsableMass(const MassData& m, float density) {
+  constexpr float smallest = std::numeric_limits<float>::min();
+  if (!std::isfinite(m.mass) || !std::isfinite(m.rotationalInertia)) {
+    throwInvalid("density", density,
+                 "the shape's mass (" + formatValue(m.mass) + " kg) or rotational inertia (" +
+                     formatValue(m.rotationalInertia) + " kg m^2) overflows float at this density");
+  }
+  if (!(m.mass >= smallest) || !(m.rotationalInertia >= smallest)) {
+    throwInvalid("density", density,
+                 "the shape's mass (" + formatValue(m.mass) + " kg) or rotational inertia (" +
+                     formatValue(m.rotationalInertia) +
+                     " kg m^2) underflows float at this density (no finite inverse)");
+  }
+  return m;
+}
+
 /// A box half-extent: finite, at least linearSlop (a side of 2 linearSlop) and bounded.
 void requireBoxHalfExtent(float value, const char* field) {
   requirePositive(value, field);
@@ -370,7 +390,7 @@ MassData computeMass(const Circle& shape, float density) {
   requirePositive(shape.radius, "radius");
   const float rr = shape.radius * shape.radius;
   const float mass = density * pi<float> * rr;
-  return {mass, shape.center, 0.5f * mass * rr};
+  return requireUsableMass({mass, shape.center, 0.5f * mass * rr}, density);
 }
 
 MassData computeMass(const Capsule& shape, float density) {
@@ -388,7 +408,8 @@ MassData computeMass(const Capsule& shape, float density) {
   const float h = 0.5f * len;
   const float circleInertia = circleMass * (0.5f * rr + h * h + 2.0f * h * lc);
   const float boxInertia = boxMass * (4.0f * rr + len * len) / 12.0f;
-  return {circleMass + boxMass, (shape.center1 + shape.center2) * 0.5f, circleInertia + boxInertia};
+  return requireUsableMass({circleMass + boxMass, (shape.center1 + shape.center2) * 0.5f, circleInertia + boxInertia},
+                           density);
 }
 
 MassData computeMass(const Polygon& shape, float density) {
@@ -408,9 +429,10 @@ MassData computeMass(const Polygon& shape, float density) {
     v[i] = {p.x, p.y};
   }
   const PolygonMass m = polygonMass(std::span<const Vec2d>(v.data(), n), static_cast<double>(density));
-  return {static_cast<float>(m.mass),
-          {static_cast<float>(m.centroid.x), static_cast<float>(m.centroid.y)},
-          static_cast<float>(m.inertia)};
+  return requireUsableMass({static_cast<float>(m.mass),
+                            {static_cast<float>(m.centroid.x), static_cast<float>(m.centroid.y)},
+                            static_cast<float>(m.inertia)},
+                           density);
 }
 
 AABB computeAABB(const Circle& shape, const Transform2f& xf) {

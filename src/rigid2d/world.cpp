@@ -514,12 +514,62 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
 
 } // namespace
 
+namespace {
+
+/// Refuses, naming `density`, a shape whose mass data would not be usable (computeMass: not
+/// finite, or with no finite inverse), or would make its body's not finite: updateMass sums, in
+/// float, each shape's mass, mass moment and inertia about the body origin (its own plus
+/// m |c|^2, up to 1e12 m^2 times the mass within maxPolygonCoordinate). Checked before the shape
+/// is added (a throw from updateMass would leave it half added), on any body type (a static body
+/// may be made dynamic later). An invalid density is left to addShape to name.
+template <class G> void requireUsableBodyMass(const WorldState& w, BodyId bodyId, const ShapeDef& def, const G& shape) {
+  const Body& b = w.body(bodyId);
+  if (!(std::isfinite(def.density) && def.density > 0.0f)) {
+    return;
+  }
+  const MassData added = computeMass(shape, def.density);
+  float mass = 0.0f;
+  Vec2f moment;
+  float inertiaAboutOrigin = 0.0f;
+  const auto add = [&](const MassData& md) {
+    mass += md.mass;
+    moment += md.center * md.mass;
+    inertiaAboutOrigin += md.rotationalInertia + md.mass * lengthSquared(md.center);
+  };
+  for (std::uint32_t slot : b.shapes) { // as updateMass, in its order, the new shape last
+    const Shape& s = w.shapes[slot];
+    if (s.density == 0.0f || detail::isLine(s.geometry)) {
+      continue;
+    }
+    std::visit(
+        [&](const auto& g) {
+          using S = std::decay_t<decltype(g)>;
+          if constexpr (!std::is_same_v<S, Segment> && !std::is_same_v<S, ChainSegment>) {
+            add(computeMass(g, s.density));
+          }
+        },
+        s.geometry);
+  }
+  add(added);
+  const Vec2f center = moment / mass;
+  const float inertia = inertiaAboutOrigin - mass * lengthSquared(center);
+  if (!std::isfinite(mass) || !isFinite(moment) || !std::isfinite(inertiaAboutOrigin) || !std::isfinite(inertia)) {
+    throwInvalid("density", def.density,
+                 "the body's mass or rotational inertia with this shape overflows float (" + formatValue(mass) +
+                     " kg, " + formatValue(inertiaAboutOrigin) + " kg m^2 about the body origin)");
+  }
+}
+
+} // namespace
+
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) {
   validateShape(circle);
+  requireUsableBodyMass(*impl_, body, def, circle);
   return addShape(*impl_, body, def, circle);
 }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Capsule& capsule) {
   validateShape(capsule);
+  requireUsableBodyMass(*impl_, body, def, capsule);
   return addShape(*impl_, body, def, capsule);
 }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& polygon) {
@@ -527,6 +577,7 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& poly
   // broadphase and the narrowphase with NaN bounds, normals of no direction, or a winding the
   // separating-axis tests do not expect.
   validateShape(polygon);
+  requireUsableBodyMass(*impl_, body, def, polygon);
   return addShape(*impl_, body, def, polygon);
 }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segment) {

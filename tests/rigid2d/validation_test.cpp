@@ -201,6 +201,26 @@ TEST(Rigid2dValidation, shape_def_and_body_id) {
       {"restitution", "nan", shape([](ShapeDef& d) { d.restitution = nanf; })},
       {"rollingResistance", "-1", shape([](ShapeDef& d) { d.rollingResistance = -1.0f; })},
       {"rollingResistance", "inf", shape([](ShapeDef& d) { d.rollingResistance = inff; })},
+      // A density whose mass data overflow float (a 1e6 m square at 1e30 kg/m^2: 1e42 kg), or
+      // underflow it (no finite inverse mass), or make the body's sums overflow: a 1 m disc
+      // 1e6 m from the body origin at 1e27 kg/m^2 has a finite 3e27 kg and 1.6e27 kg m^2 of
+      // its own, but 3e39 kg m^2 about the origin.
+      {"density", formatValue(1e30f), on([](Fixture& x) {
+         ShapeDef d;
+         d.density = 1e30f;
+         x.world.createShape(x.a, d, makeBox(5e5f, 5e5f));
+       })},
+      {"density", formatValue(1e-40f), shape([](ShapeDef& d) { d.density = 1e-40f; })},
+      {"density", formatValue(1e27f), on([](Fixture& x) {
+         ShapeDef d;
+         d.density = 1e27f;
+         x.world.createShape(x.a, d, Circle{{1e6f, 0.0f}, 1.0f});
+       })},
+      {"density", formatValue(1e30f), on([](Fixture& x) { // on a static body too: it may become dynamic
+         ShapeDef d;
+         d.density = 1e30f;
+         x.world.createShape(x.ground, d, Capsule{{-5e5f, 0.0f}, {5e5f, 0.0f}, 5e5f});
+       })},
       {"body id", "3", on([](Fixture& x) { x.world.createShape(x.gone, {}, Circle{}); })},
       {"body id", "3", on([](Fixture& x) { x.world.destroyBody(x.gone); })},
       {"body id", "3", on([](Fixture& x) { (void)x.world.position(x.gone); })},
@@ -408,6 +428,19 @@ TEST(Rigid2dValidation, shape_makers_and_mass) {
          (void)computeMass(Capsule{{0, 0}, {1, 0}, -1.0f}, 1.0f);
        }},
       {"density", "-1", [] { (void)computeMass(makeBox(1.0f, 1.0f), -1.0f); }},
+      {"density", formatValue(1e30f), [] { (void)computeMass(makeBox(5e5f, 5e5f), 1e30f); }},
+      {"density", formatValue(1e37f),
+       [] {
+         (void)computeMass(Circle{{}, 10.0f}, 1e37f);
+       }},
+      {"density", formatValue(1e36f),
+       [] {
+         (void)computeMass(Capsule{{0, 0}, {100, 0}, 1.0f}, 1e36f);
+       }},
+      {"density", formatValue(1e-40f),
+       [] {
+         (void)computeMass(Circle{{}, 0.5f}, 1e-40f);
+       }},
   });
   expectAccepted({
       {"a rounded polygon of radius 0 and a triangle", [triangle] { (void)makePolygon(triangle, 0.0f); }},
@@ -420,6 +453,35 @@ TEST(Rigid2dValidation, shape_makers_and_mass) {
          (void)makePolygon(pts);
        }},
   });
+}
+
+// computeMass refuses a density at which the mass data are not finite, normal floats; below that
+// they are the closed form. A 1e6 m square (the largest makeBox) at 1e14 kg/m^2: m = rho s^2 =
+// 1e26 kg, I = m s^2 / 6 = 1.7e37 kg m^2, a tenth of float's limit (computeMass integrates in
+// double and rounds once: relative error below 1e-7, checked to 1e-6).
+TEST(Rigid2dValidation, a_density_refused_for_its_mass_leaves_the_world_as_it_was) {
+  const double rho = static_cast<double>(1e14f);
+  const double side = 1e6;
+  const MassData largest = computeMass(makeBox(5e5f, 5e5f), 1e14f);
+  EXPECT_NEAR(largest.mass, rho * side * side, 1e-6 * rho * side * side);
+  EXPECT_NEAR(largest.rotationalInertia, rho * side * side * side * side / 6.0,
+              1e-6 * rho * side * side * side * side / 6.0);
+
+  // Refused before the shape is added: the body keeps its shapes and mass, and steps.
+  Fixture x;
+  const std::size_t shapes = x.world.shapeCount();
+  const float mass = x.world.mass(x.a);
+  const float inertia = x.world.rotationalInertia(x.a);
+  ShapeDef d;
+  d.density = 1e27f;
+  EXPECT_THROW(x.world.createShape(x.a, d, Circle{{1e6f, 0.0f}, 1.0f}), Error);
+  EXPECT_EQ(x.world.shapeCount(), shapes);
+  EXPECT_EQ(x.world.mass(x.a), mass);
+  EXPECT_EQ(x.world.rotationalInertia(x.a), inertia);
+  for (int i = 0; i < 10; ++i) {
+    x.world.step(1.0f / 60.0f);
+  }
+  EXPECT_TRUE(isFinite(x.world.position(x.a)) && isFinite(x.world.linearVelocity(x.a)));
 }
 
 TEST(Rigid2dValidation, joint_base_and_bodies) {

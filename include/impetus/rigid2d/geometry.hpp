@@ -89,7 +89,10 @@ struct MassData {
   float rotationalInertia = 0.0f; ///< kg m^2, about `center`
 };
 
-/// Mass properties at an areal density (kg/m^2, > 0). A segment has none.
+/// Mass properties at an areal density (kg/m^2, > 0). A segment has none. Throws impetus::Error
+/// naming `density` where the mass or the rotational inertia would not be a finite, normal float
+/// (above 3.4e38 or below 1.2e-38: a body needs their inverses). A square of side s has inertia
+/// density s^4 / 6: the largest, 2e6 m across, is refused above about 1.3e14 kg/m^2.
 [[nodiscard]] MassData computeMass(const Circle& shape, float density);
 [[nodiscard]] MassData computeMass(const Capsule& shape, float density);
 [[nodiscard]] MassData computeMass(const Polygon& shape, float density);
