@@ -39,6 +39,7 @@
 namespace {
 
 using impetus::Transform2f;
+using impetus::Vec2d;
 using impetus::Vec2f;
 using impetus::fuzz::str;
 namespace r2 = impetus::rigid2d;
@@ -131,23 +132,13 @@ r2::Manifold collide(const Shape& a, const Transform2f& xfA, const Shape& b, con
 
 // The reference, in double precision, in world coordinates. ----------------------------------
 
-struct D {
-  double x = 0.0;
-  double y = 0.0;
-};
-D operator-(D a, D b) { return {a.x - b.x, a.y - b.y}; }
-D operator+(D a, D b) { return {a.x + b.x, a.y + b.y}; }
-D operator*(D a, double s) { return {a.x * s, a.y * s}; }
-double dot(D a, D b) { return a.x * b.x + a.y * b.y; }
-double len(D a) { return std::hypot(a.x, a.y); }
-
 /// A shape's core (its vertices, world frame) and radius.
 struct Core {
-  std::vector<D> v;
+  std::vector<Vec2d> v;
   double radius = 0.0;
 };
 
-D world(const Transform2f& xf, const Vec2f& p) {
+Vec2d world(const Transform2f& xf, const Vec2f& p) {
   const double c = xf.q.c;
   const double s = xf.q.s;
   return {c * p.x - s * p.y + xf.p.x, s * p.x + c * p.y + xf.p.y};
@@ -169,11 +160,11 @@ Core core(const Shape& s, const Transform2f& xf) {
   return k;
 }
 
-double pointSegment(D p, D a, D b) {
-  const D ab = b - a;
+double pointSegment(Vec2d p, Vec2d a, Vec2d b) {
+  const Vec2d ab = b - a;
   const double ab2 = dot(ab, ab);
   const double t = ab2 > 0.0 ? std::clamp(dot(p - a, ab) / ab2, 0.0, 1.0) : 0.0;
-  return len(p - (a + ab * t));
+  return length(p - (a + ab * t));
 }
 
 /// The signed distance between two cores: their distance when apart; when they overlap, minus
@@ -184,7 +175,7 @@ double pointSegment(D p, D a, D b) {
 /// what overlaps.
 double coreSignedDistance(const Core& a, const Core& b) {
   const auto edges = [](const Core& k) {
-    std::vector<std::array<D, 2>> e;
+    std::vector<std::array<Vec2d, 2>> e;
     if (k.v.size() == 1) {
       e.push_back({k.v[0], k.v[0]});
     } else if (k.v.size() == 2) {
@@ -196,14 +187,14 @@ double coreSignedDistance(const Core& a, const Core& b) {
     }
     return e;
   };
-  std::vector<D> axes;
+  std::vector<Vec2d> axes;
   for (const Core* k : {&a, &b}) {
     for (const auto& e : edges(*k)) {
-      const D d = e[1] - e[0];
-      const double l = len(d);
+      const Vec2d d = e[1] - e[0];
+      const double l = length(d);
       if (l > 0.0) {
-        axes.push_back(D{d.y, -d.x} * (1.0 / l));
-        axes.push_back(D{-d.y, d.x} * (1.0 / l));
+        axes.push_back(Vec2d{d.y, -d.x} * (1.0 / l));
+        axes.push_back(Vec2d{-d.y, d.x} * (1.0 / l));
         if (k->v.size() == 2) {
           axes.push_back(d * (1.0 / l));
           axes.push_back(d * (-1.0 / l));
@@ -212,13 +203,13 @@ double coreSignedDistance(const Core& a, const Core& b) {
     }
   }
   double best = -std::numeric_limits<double>::max();
-  for (const D& u : axes) {
+  for (const Vec2d& u : axes) {
     double maxA = -std::numeric_limits<double>::max();
     double minB = std::numeric_limits<double>::max();
-    for (const D& p : a.v) {
+    for (const Vec2d& p : a.v) {
       maxA = std::max(maxA, dot(u, p));
     }
-    for (const D& q : b.v) {
+    for (const Vec2d& q : b.v) {
       minB = std::min(minB, dot(u, q));
     }
     best = std::max(best, minB - maxA);
@@ -241,7 +232,7 @@ double coreSignedDistance(const Core& a, const Core& b) {
 struct FaceSeparation {
   double best = -std::numeric_limits<double>::max();
   double second = -std::numeric_limits<double>::max();
-  D normal;
+  Vec2d normal;
 };
 
 FaceSeparation faces(const Shape& a, const Transform2f& xfA, const Core& b) {
@@ -249,10 +240,10 @@ FaceSeparation faces(const Shape& a, const Transform2f& xfA, const Core& b) {
   for (int i = 0; i < a.polygon.count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const Vec2f nl = a.polygon.normals[k];
-    const D n{xfA.q.c * nl.x - xfA.q.s * nl.y, xfA.q.s * nl.x + xfA.q.c * nl.y};
-    const D v = world(xfA, a.polygon.vertices[k]);
+    const Vec2d n{xfA.q.c * nl.x - xfA.q.s * nl.y, xfA.q.s * nl.x + xfA.q.c * nl.y};
+    const Vec2d v = world(xfA, a.polygon.vertices[k]);
     double deepest = std::numeric_limits<double>::max();
-    for (const D& q : b.v) {
+    for (const Vec2d& q : b.v) {
       deepest = std::min(deepest, dot(n, q - v));
     }
     if (deepest > f.best) {
@@ -268,12 +259,12 @@ FaceSeparation faces(const Shape& a, const Transform2f& xfA, const Core& b) {
 
 /// The two best dot products of `n` with the other polygon's normals (its incident edge is the
 /// most anti-parallel one).
-bool incidentTie(const Shape& s, const Transform2f& xf, D n, double tolerance) {
+bool incidentTie(const Shape& s, const Transform2f& xf, Vec2d n, double tolerance) {
   double first = std::numeric_limits<double>::max();
   double second = std::numeric_limits<double>::max();
   for (int i = 0; i < s.polygon.count; ++i) {
     const Vec2f nl = s.polygon.normals[static_cast<std::size_t>(i)];
-    const double d = dot(n, D{xf.q.c * nl.x - xf.q.s * nl.y, xf.q.s * nl.x + xf.q.c * nl.y});
+    const double d = dot(n, Vec2d{xf.q.c * nl.x - xf.q.s * nl.y, xf.q.s * nl.x + xf.q.c * nl.y});
     if (d < first) {
       second = first;
       first = d;
@@ -572,7 +563,7 @@ bool makeShape(impetus::fuzz::Reader& in, std::uint8_t k, float L, bool chainAll
 
 double extent(const Core& c) {
   double e = c.radius;
-  for (const D& v : c.v) {
+  for (const Vec2d& v : c.v) {
     e = std::max({e, std::abs(v.x), std::abs(v.y)});
   }
   return e;

@@ -90,23 +90,13 @@ TEST(Manifold, parallel_capsules_touch_along_a_segment) {
 // direction is the line between those points; overlapping, it is minus the depth along the best
 // separating axis: the edge normals of both and, for a segment, its direction both ways (the
 // axis two segments on one line need).
-struct DVec {
-  double x = 0.0;
-  double y = 0.0;
-};
-DVec operator-(DVec a, DVec b) { return {a.x - b.x, a.y - b.y}; }
-DVec operator+(DVec a, DVec b) { return {a.x + b.x, a.y + b.y}; }
-DVec operator*(DVec a, double s) { return {a.x * s, a.y * s}; }
-double dot(DVec a, DVec b) { return a.x * b.x + a.y * b.y; }
-double norm(DVec a) { return std::hypot(a.x, a.y); }
-
 struct CoreReference {
   double signedDistance = 0.0; ///< of the cores; less both radii for the shapes'
-  DVec direction;              ///< unit, from A to B: the closest points' line, or the best axis
+  Vec2d direction;             ///< unit, from A to B: the closest points' line, or the best axis
 };
 
-std::vector<DVec> worldCore(const Polygon& p, const Transform2f& xf) {
-  std::vector<DVec> v;
+std::vector<Vec2d> worldCore(const Polygon& p, const Transform2f& xf) {
+  std::vector<Vec2d> v;
   for (int i = 0; i < p.count; ++i) {
     const Vec2f l = p.vertices[static_cast<std::size_t>(i)];
     const double c = xf.q.c;
@@ -117,10 +107,10 @@ std::vector<DVec> worldCore(const Polygon& p, const Transform2f& xf) {
 }
 
 CoreReference coreReference(const Polygon& a, const Transform2f& xfA, const Polygon& b, const Transform2f& xfB) {
-  const std::vector<DVec> va = worldCore(a, xfA);
-  const std::vector<DVec> vb = worldCore(b, xfB);
-  const auto edges = [](const std::vector<DVec>& v) {
-    std::vector<std::array<DVec, 2>> e;
+  const std::vector<Vec2d> va = worldCore(a, xfA);
+  const std::vector<Vec2d> vb = worldCore(b, xfB);
+  const auto edges = [](const std::vector<Vec2d>& v) {
+    std::vector<std::array<Vec2d, 2>> e;
     for (std::size_t i = 0; i < (v.size() == 2 ? 1 : v.size()); ++i) {
       e.push_back({v[i], v[(i + 1) % v.size()]});
     }
@@ -128,22 +118,22 @@ CoreReference coreReference(const Polygon& a, const Transform2f& xfA, const Poly
   };
   // The best separating axis (from A to B).
   CoreReference best{-1e300, {}};
-  for (const std::vector<DVec>* k : {&va, &vb}) {
+  for (const std::vector<Vec2d>* k : {&va, &vb}) {
     for (const auto& e : edges(*k)) {
-      const DVec d = e[1] - e[0];
-      const double l = norm(d);
-      std::vector<DVec> axes{DVec{d.y / l, -d.x / l}, DVec{-d.y / l, d.x / l}};
+      const Vec2d d = e[1] - e[0];
+      const double l = length(d);
+      std::vector<Vec2d> axes{Vec2d{d.y / l, -d.x / l}, Vec2d{-d.y / l, d.x / l}};
       if (k->size() == 2) {
         axes.push_back(d * (1.0 / l));
         axes.push_back(d * (-1.0 / l));
       }
-      for (const DVec& u : axes) {
+      for (const Vec2d& u : axes) {
         double maxA = -1e300;
         double minB = 1e300;
-        for (const DVec& p : va) {
+        for (const Vec2d& p : va) {
           maxA = std::max(maxA, dot(u, p));
         }
-        for (const DVec& q : vb) {
+        for (const Vec2d& q : vb) {
           minB = std::min(minB, dot(u, q));
         }
         if (minB - maxA > best.signedDistance) {
@@ -156,24 +146,24 @@ CoreReference coreReference(const Polygon& a, const Transform2f& xfA, const Poly
     return best;
   }
   // Apart: the closest vertex-edge pair.
-  const auto closestOnSegment = [](DVec p, DVec e0, DVec e1) {
-    const DVec d = e1 - e0;
+  const auto closestOnSegment = [](Vec2d p, Vec2d e0, Vec2d e1) {
+    const Vec2d d = e1 - e0;
     const double t = std::clamp(dot(p - e0, d) / dot(d, d), 0.0, 1.0);
     return e0 + d * t;
   };
   CoreReference apart{1e300, {}};
-  const auto consider = [&](DVec onA, DVec onB) {
-    const double distance = norm(onB - onA);
+  const auto consider = [&](Vec2d onA, Vec2d onB) {
+    const double distance = length(onB - onA);
     if (distance < apart.signedDistance) {
       apart = {distance, (onB - onA) * (1.0 / distance)};
     }
   };
   for (const auto& ea : edges(va)) {
     for (const auto& eb : edges(vb)) {
-      for (const DVec& p : ea) {
+      for (const Vec2d& p : ea) {
         consider(p, closestOnSegment(p, eb[0], eb[1]));
       }
-      for (const DVec& q : eb) {
+      for (const Vec2d& q : eb) {
         consider(closestOnSegment(q, ea[0], ea[1]), q);
       }
     }
