@@ -9,6 +9,7 @@
 #include <impetus/sensors/depth_pressure.hpp>
 #include <impetus/sensors/finite_difference.hpp>
 #include <impetus/sensors/gestures.hpp>
+#include <impetus/sensors/hourglass.hpp>
 #include <impetus/sensors/load_cell.hpp>
 #include <impetus/sensors/moving_average.hpp>
 #include <impetus/sensors/optical_tracking.hpp>
