@@ -75,6 +75,23 @@ TEST(DisplayCalc, spec_frustum_oracle_and_anaglyph) {
   EXPECT_NEAR(a.at("gray").at("value").at(1).get<double>(), 0.114, 1e-15);
 }
 
+TEST(SensorsCalc, hourglass_drains_upright_and_stops_on_its_side) {
+  // Upright every grain leaves the top bulb within the limit; on its side (90 degrees) the neck
+  // lies level and most of the sand stays. Beverloo's 2D rate is the closed form for C = 1:
+  // 0.82 / (pi (2 mm)^2 / 4) sqrt(9.80665) (8 - 3 mm)^1.5 = 289.0 grains/s.
+  const json upright = run({"hourglass", "--grain-count", "150"});
+  EXPECT_EQ(upright.at("drained").at("value"), true);
+  EXPECT_EQ(value(upright, "grains_left"), 0.0);
+  EXPECT_GT(value(upright, "drain_time"), 0.0);
+  EXPECT_GT(value(upright, "flow_rate"), 0.0);
+  EXPECT_NEAR(value(upright, "beverloo_rate"), 289.0, 0.1);
+  const json side = run({"hourglass", "--grain-count", "150", "--tilt", "90", "--max-time", "2"});
+  EXPECT_EQ(side.at("drained").at("value"), false);
+  EXPECT_GT(value(side, "grains_left"), 75.0);
+  expectUsageError(impetus({"calc", "hourglass", "--neck-width", "0.002"}), "--neck-width = 0.002");
+  expectUsageError(impetus({"calc", "hourglass", "--grain-count", "5000"}), "--grain-count = 5000");
+}
+
 TEST(SensorsCalc, bad_input_is_refused_naming_the_parameter) {
   expectUsageError(impetus({"calc", "sensor-filter", "--cutoff-hz", "60"}), "--cutoff-hz = 60");
   expectUsageError(impetus({"calc", "accel-clip", "--range", "0"}), "--range = 0");
