@@ -89,7 +89,7 @@ std::vector<Vec2d> fillSites(const HourglassSettings& s, double largest, std::si
     const auto first = static_cast<int>(std::ceil((-room - shift) / spacing));
     const auto last = static_cast<int>(std::floor((room - shift) / spacing));
     for (int i = first; i <= last && sites.size() < wanted; ++i) {
-      sites.push_back({shift + spacing * i, y});
+      sites.emplace_back(shift + spacing * i, y);
     }
   }
   return sites;
