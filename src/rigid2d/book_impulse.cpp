@@ -49,17 +49,12 @@ Vec2f toFloat(const Vec2d& v) { return {static_cast<float>(v.x), static_cast<flo
 } // namespace
 
 void solveBookImpulse(WorldState& w, float dt) {
-  StepContext context;
-  context.dt = dt;
-  context.h = dt;
-  context.inverseH = 1.0f / dt;
-  context.jointSoftness =
-      makeSoft(std::min(w.def.jointHertz, 0.25f * context.inverseH), w.def.jointDampingRatio, context.h);
+  const StepContext context = makeStepContext(w, dt, 1);
   buildSolverBodies(w);
   integrateVelocities(w, context);
   // Joints (the book has none: they are the soft step's, solved once per frame here).
   prepareJoints(w, context);
-  warmStartJoints(w);
+  warmStartJoints(w, context);
   solveJoints(w, context, true);
   const std::uint32_t staticIndex = w.staticIndex();
   for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {

@@ -42,11 +42,39 @@ void prepareJoints(WorldState& w, const StepContext& context) {
   }
 }
 
-void warmStartJoints(WorldState& w) {
+namespace {
+
+/// How far past the speed limits a joint may leave a body within the solve before it is held
+/// to them. Within it the solve runs untouched (the velocities are clamped where they are
+/// integrated); beyond it the body is a runaway.
+constexpr float runawayFactor = 1000.0f;
+
+/// Keeps the joint's dynamic bodies within the speed limits after its solve: an ill-conditioned
+/// joint (a light, small body on a long lever arm; anchors pulled metres apart) can hand its
+/// bodies a runaway velocity that the next joint or contact would multiply into an overflow.
+void clampJointBodies(WorldState& w, const JointFrame& f, const StepContext& context) {
+  const float runawaySpeed = runawayFactor * context.maxLinearSpeed;
+  const float runawaySpin = runawayFactor * context.maxAngularSpeed;
+  const auto clampIfDynamic = [&](std::uint32_t index) {
+    if (index < w.sims.size() && w.sims[index].dynamic) {
+      BodyState& s = w.states[index];
+      if (!(std::abs(s.v.x) + std::abs(s.v.y) <= runawaySpeed && std::abs(s.w) <= runawaySpin)) {
+        clampVelocity(s, context);
+      }
+    }
+  };
+  clampIfDynamic(f.indexA);
+  clampIfDynamic(f.indexB);
+}
+
+} // namespace
+
+void warmStartJoints(WorldState& w, const StepContext& context) {
   const std::uint32_t staticIndex = w.staticIndex();
   for (Joint& joint : w.joints) {
     if (joint.solved) {
       std::visit([&](auto& data) { warmStartJoint(data, joint.frame, w.states, staticIndex); }, joint.data);
+      clampJointBodies(w, joint.frame, context);
     }
   }
 }
@@ -57,6 +85,7 @@ void solveJoints(WorldState& w, const StepContext& context, bool useBias) {
     if (joint.solved) {
       std::visit([&](auto& data) { solveJoint(data, joint.frame, w.states, staticIndex, context, useBias); },
                  joint.data);
+      clampJointBodies(w, joint.frame, context);
     }
   }
 }

@@ -38,7 +38,7 @@ struct Joint {
 
 // joint.cpp: the joints' part of the step, in joint slot order.
 void prepareJoints(WorldState& w, const StepContext& context);
-void warmStartJoints(WorldState& w);
+void warmStartJoints(WorldState& w, const StepContext& context);
 void solveJoints(WorldState& w, const StepContext& context, bool useBias);
 /// Reaction readouts and break events, after the substeps.
 void finishJoints(WorldState& w, const StepContext& context);

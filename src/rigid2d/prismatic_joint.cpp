@@ -119,14 +119,8 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
     joint.motorImpulse = std::clamp(old - axialMass * (axialSpeed(g, a, b) - def.motorSpeed), -maxImpulse, maxImpulse);
     applyAxial(g, frame, a, b, joint.motorImpulse - old);
   }
-  if (def.enableLimit && canSlide) {
-    solveTranslationLimit(joint.lowerImpulse, translation - def.lowerTranslation, 1.0f, g, frame, a, b, axialMass,
-                          context, useBias);
-    solveTranslationLimit(joint.upperImpulse, def.upperTranslation - translation, -1.0f, g, frame, a, b, axialMass,
-                          context, useBias);
-  }
 
-  // The line and angle block, last: it matters most.
+  // The line and angle block.
   const Vec2f cdot{dot(g.normal, b.v - a.v) + g.s2 * b.w - g.s1 * a.w, b.w - a.w};
   Vec2f bias;
   float massScale = 1.0f;
@@ -152,6 +146,19 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
   a.w -= frame.iA * (impulse.x * g.s1 + impulse.y);
   b.v += p * frame.mB;
   b.w += frame.iB * (impulse.x * g.s2 + impulse.y);
+
+  // The limits last, after the block (Box2D v3 solves them before it): a limit is one-sided and
+  // speculative, and a range shorter than a substep's travel has both rows acting in turn; solved
+  // before the block they kicked a light body A's spin through the lever arm, the block turned
+  // it back, and the warm start of the next substep replayed both (a 5 kg, 10 cm capsule on a
+  // 0.76 m wheel, +-5 cm of travel, struck at 80 m/s: 45 times the energy in three steps). After
+  // the block, the limit has the last word on the axial speed and the angle row is not undone.
+  if (def.enableLimit && canSlide) {
+    solveTranslationLimit(joint.lowerImpulse, translation - def.lowerTranslation, 1.0f, g, frame, a, b, axialMass,
+                          context, useBias);
+    solveTranslationLimit(joint.upperImpulse, def.upperTranslation - translation, -1.0f, g, frame, a, b, axialMass,
+                          context, useBias);
+  }
 
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);

@@ -69,27 +69,8 @@ void buildSolverBodies(WorldState& w) {
   });
 }
 
-namespace {
-
-/// Holds a dynamic body's velocity within the world's speed limits: maxLinearSpeed and the
-/// largest turn per substep. Applied where velocities are integrated and again before positions
-/// are: the constraints may have pushed a body past them in between (a fast-spinning lever on a
-/// joint, say), and a position step at an unbounded speed is how a world blows up.
-[[gnu::always_inline]] inline void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
-  // Each component first, so that an overflowed (infinite) velocity still has a direction.
-  s.v = {std::clamp(s.v.x, -maxSpeed, maxSpeed), std::clamp(s.v.y, -maxSpeed, maxSpeed)};
-  if (lengthSquared(s.v) > maxSpeed * maxSpeed) {
-    s.v = normalize(s.v) * maxSpeed;
-  }
-  s.w = std::clamp(s.w, -maxAngularSpeed, maxAngularSpeed);
-}
-
-} // namespace
-
 void integrateVelocities(WorldState& w, const StepContext& context) {
   const float h = context.h;
-  const float maxSpeed = w.def.maxLinearSpeed;
-  const float maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
   w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t i = begin; i < end; ++i) {
       const BodySim& sim = w.sims[i];
@@ -100,18 +81,16 @@ void integrateVelocities(WorldState& w, const StepContext& context) {
       // Implicit damping: stable for any coefficient.
       s.v = (s.v + sim.acceleration * h) * (1.0f / (1.0f + h * sim.linearDamping));
       s.w = (s.w + sim.angularAcceleration * h) * (1.0f / (1.0f + h * sim.angularDamping));
-      clampVelocity(s, maxSpeed, maxAngularSpeed);
+      clampVelocity(s, context);
     }
   });
 }
 
 void clampVelocities(WorldState& w, const StepContext& context) {
-  const float maxSpeed = w.def.maxLinearSpeed;
-  const float maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
   w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t i = begin; i < end; ++i) {
       if (w.sims[i].dynamic) {
-        clampVelocity(w.states[i], maxSpeed, maxAngularSpeed);
+        clampVelocity(w.states[i], context);
       }
     }
   });
@@ -119,13 +98,11 @@ void clampVelocities(WorldState& w, const StepContext& context) {
 
 void integratePositions(WorldState& w, const StepContext& context) {
   const float h = context.h;
-  const float maxSpeed = w.def.maxLinearSpeed;
-  const float maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
   w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t i = begin; i < end; ++i) {
       BodyState& s = w.states[i];
       if (w.sims[i].dynamic) {
-        clampVelocity(s, maxSpeed, maxAngularSpeed);
+        clampVelocity(s, context);
       }
       s.dp += s.v * h;
       const float angle = s.w * h;
@@ -134,21 +111,28 @@ void integratePositions(WorldState& w, const StepContext& context) {
   });
 }
 
-void solve(WorldState& w, float dt) {
+StepContext makeStepContext(const WorldState& w, float dt, int substeps) {
   StepContext context;
   context.dt = dt;
-  context.substeps = w.def.substeps;
-  context.h = dt / static_cast<float>(context.substeps);
+  context.substeps = substeps;
+  context.h = dt / static_cast<float>(substeps);
   context.inverseH = 1.0f / context.h;
+  context.maxLinearSpeed = w.def.maxLinearSpeed;
+  context.maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
   // Joints are held at their own stiffness, capped like the contacts' by the substep rate.
   context.jointSoftness =
       makeSoft(std::min(w.def.jointHertz, 0.25f * context.inverseH), w.def.jointDampingRatio, context.h);
+  return context;
+}
+
+void solve(WorldState& w, float dt) {
+  const StepContext context = makeStepContext(w, dt, w.def.substeps);
   buildSolverBodies(w);
   prepareJoints(w, context);
   prepareContacts(w, context);
   for (int substep = 0; substep < context.substeps; ++substep) {
     integrateVelocities(w, context);
-    warmStartJoints(w);
+    warmStartJoints(w, context);
     warmStartContacts(w);
     solveJoints(w, context, true);
     solveContacts(w, context, true);

@@ -286,8 +286,24 @@ struct StepContext {
   float h = 0.0f;        ///< substep, s
   float inverseH = 0.0f; ///< 1/s
   int substeps = 1;
-  Softness jointSoftness; ///< the stiffness that holds joints together (jointHertz, jointDampingRatio)
+  Softness jointSoftness;       ///< the stiffness that holds joints together (jointHertz, jointDampingRatio)
+  float maxLinearSpeed = 0.0f;  ///< m/s (WorldDef::maxLinearSpeed)
+  float maxAngularSpeed = 0.0f; ///< rad/s: the largest turn per substep (a quarter turn) over h
 };
+
+/// Holds a dynamic body's velocity within the step's speed limits. Applied where velocities are
+/// integrated, after each joint's solve and before positions are integrated: the constraints may
+/// push a body past the limits in between (a light lever on a joint, say), and a constraint
+/// solved with a runaway velocity, or a position step at one, is how a world blows up.
+[[gnu::always_inline]] inline void clampVelocity(BodyState& s, const StepContext& context) {
+  const float maxSpeed = context.maxLinearSpeed;
+  // Each component first, so that an overflowed (infinite) velocity still has a direction.
+  s.v = {std::clamp(s.v.x, -maxSpeed, maxSpeed), std::clamp(s.v.y, -maxSpeed, maxSpeed)};
+  if (lengthSquared(s.v) > maxSpeed * maxSpeed) {
+    s.v = normalize(s.v) * maxSpeed;
+  }
+  s.w = std::clamp(s.w, -context.maxAngularSpeed, context.maxAngularSpeed);
+}
 
 /// Whether two shapes' filters let them collide: A and B collide when each one's category is in
 /// the other's mask, unless they share a non-zero group (positive: always, negative: never).
@@ -321,6 +337,9 @@ void recordManifoldFrame(Contact& contact, const Transform2f& xfA, const Transfo
 /// The substepped soft-step solve of every moving body and touching contact: builds `states`
 /// from the awake bodies and leaves the step's velocities and position deltas in them.
 void solve(WorldState& w, float dt);
+/// The step's constants for `substeps` substeps of dt / substeps: the speed limits and the
+/// joints' softness.
+[[nodiscard]] StepContext makeStepContext(const WorldState& w, float dt, int substeps);
 /// Gives every moving body a solver index and loads `states` and `sims` from the bodies.
 void buildSolverBodies(WorldState& w);
 /// Semi-implicit Euler over one (sub)step of context.h: velocities from accelerations and

@@ -3,7 +3,7 @@
 // 10 m across, masses 1 to 100 kg side by side, bodies thrown at up to 200 m/s, joints of every kind,
 // bodies destroyed and created while others sleep, rest and collide.
 //
-//   impetus-soak [--seconds S] [--seed N] [--episode-seconds T] [--threads K] [--joints on|off]
+//   impetus-soak [--seconds S] [--seed N] [--episode-seconds T] [--threads K] [--joints on|off] [--prismatic on|off]
 //                [--first-episode N]   (start at episode N: a failure's reproduction)
 //
 // Each episode builds a world from (seed, episode) alone, so any failure is reproduced by its
@@ -168,7 +168,7 @@ void addBody(Episode& e, Random& rng, const Vec2f& at, bool closed) {
 
 /// A random joint between body A and body B placed against its right side (closed episodes: no
 /// motors or springs); the pin is where their bounding circles touch, `extentA` right of A.
-void addJoint(Episode& e, Random& rng, BodyId a, BodyId b, float extentA, bool closed) {
+void addJoint(Episode& e, Random& rng, BodyId a, BodyId b, float extentA, bool closed, bool prismatic) {
   const Vec2f pa = e.world.worldCenterOfMass(a);
   const Vec2f pb = e.world.worldCenterOfMass(b);
   const Vec2f mid = e.world.position(a) + Vec2f{extentA, 0.0f};
@@ -179,7 +179,11 @@ void addJoint(Episode& e, Random& rng, BodyId a, BodyId b, float extentA, bool c
   // Joints start at rest: reference angles are the bodies' relative angle when joined.
   const float relativeAngle = e.world.angle(b) - e.world.angle(a);
   JointId id;
-  switch (rng.below(closed ? 3 : 6)) {
+  int kind = rng.below(closed ? 3 : 6);
+  if (kind == 2 && !prismatic) {
+    kind = rng.below(2); // a revolute or distance joint instead
+  }
+  switch (kind) {
   case 0: {
     RevoluteJointDef d;
     d.referenceAngle = relativeAngle;
@@ -275,7 +279,7 @@ double mechanicalEnergy(const Episode& e) {
   return total;
 }
 
-std::unique_ptr<Episode> buildEpisode(std::uint64_t seed, int index, TaskRunner* runner, bool joints) {
+std::unique_ptr<Episode> buildEpisode(std::uint64_t seed, int index, TaskRunner* runner, bool joints, bool prismatic) {
   Random rng(seed * 0x100000001b3ULL + static_cast<std::uint64_t>(index));
   auto e = std::make_unique<Episode>(Episode{World(worldDef(runner)), {}, {}, {}, {}, {}, false, 0.0, 0.0});
   e->closed = rng.chance(0.3f);
@@ -312,7 +316,7 @@ std::unique_ptr<Episode> buildEpisode(std::uint64_t seed, int index, TaskRunner*
     const BodyId bodyB = e->bodies[a + 1];
     const Vec2f at = e->world.position(bodyA) + Vec2f{e->extents[a] + e->extents[a + 1], 0.0f};
     e->world.setTransform(bodyB, at, e->world.angle(bodyB));
-    addJoint(*e, rng, bodyA, bodyB, e->extents[a], e->closed);
+    addJoint(*e, rng, bodyA, bodyB, e->extents[a], e->closed, prismatic);
   }
   e->energy0 = mechanicalEnergy(*e);
   double scale = 0.0;
@@ -398,10 +402,28 @@ std::optional<Failure> check(Episode& e, EpisodeStats& stats) {
   return std::nullopt;
 }
 
+/// Debugging aid (IMPETUS_SOAK_TRACE set): each step, the fastest body and the energy.
+void trace(const Episode& e, std::int64_t step) {
+  float fastest = 0.0f;
+  float fastestSpin = 0.0f;
+  std::uint32_t which = 0;
+  for (const BodyId b : e.bodies) {
+    const float v = length(e.world.linearVelocity(b));
+    fastestSpin = std::max(fastestSpin, std::abs(e.world.angularVelocity(b)));
+    if (v > fastest) {
+      fastest = v;
+      which = b.index;
+    }
+  }
+  std::fprintf(stderr, "step %lld: energy %.6g J, fastest body %u at %.3g m/s, fastest spin %.3g rad/s\n",
+               static_cast<long long>(step), mechanicalEnergy(e), which, static_cast<double>(fastest),
+               static_cast<double>(fastestSpin));
+}
+
 int usage(const std::string& why) {
   std::fprintf(stderr,
                "impetus-soak: %s\nusage: impetus-soak [--seconds S] [--seed N] [--episode-seconds T] "
-               "[--threads K] [--joints on|off] [--first-episode N]\n",
+               "[--threads K] [--joints on|off] [--prismatic on|off] [--first-episode N]\n",
                why.c_str());
   return 2;
 }
@@ -414,6 +436,7 @@ int main(int argc, char** argv) {
   double episodeSeconds = 60.0;
   int threads = 1;
   bool joints = true;
+  bool prismatic = true;
   long long firstEpisode = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -432,6 +455,9 @@ int main(int argc, char** argv) {
       firstEpisode = std::strtoll(value.c_str(), &end, 10);
     } else if (arg == "--joints") {
       joints = value != "0" && value != "off";
+      end = argv[i] + value.size();
+    } else if (arg == "--prismatic") {
+      prismatic = value != "0" && value != "off";
       end = argv[i] + value.size();
     } else if (arg == "--threads") {
       threads = static_cast<int>(std::strtol(value.c_str(), &end, 10));
@@ -456,14 +482,24 @@ int main(int argc, char** argv) {
   while (elapsed() < wallSeconds) {
     const int index = episodes++;
     try {
-      std::unique_ptr<Episode> e = buildEpisode(seed, index, pool.get(), joints);
+      std::unique_ptr<Episode> e = buildEpisode(seed, index, pool.get(), joints, prismatic);
       closedEpisodes += e->closed ? 1 : 0;
       Random rng(seed ^ (0xabcdef12345ULL + static_cast<std::uint64_t>(index)));
       for (std::int64_t step = 0; step < stepsPerEpisode; ++step) {
         if (!e->closed) {
           meddle(*e, rng);
         }
-        e->world.step(timeStep);
+        try {
+          e->world.step(timeStep);
+        } catch (const Error& error) {
+          std::fprintf(stderr, "impetus-soak: FAILED seed %llu episode %d (%s) step %lld: impetus::Error %s\n",
+                       static_cast<unsigned long long>(seed), index, e->closed ? "closed" : "open",
+                       static_cast<long long>(step), error.what());
+          return 1;
+        }
+        if (std::getenv("IMPETUS_SOAK_TRACE") != nullptr) {
+          trace(*e, step);
+        }
         ++total.steps;
         if (const std::optional<Failure> f = check(*e, total)) {
           std::fprintf(stderr, "impetus-soak: FAILED seed %llu episode %d (%s) step %lld: %s\n",
