@@ -1,5 +1,6 @@
 # `cmake --install` puts headers, the library and impetusConfig.cmake under the prefix, so that
-# another project can `find_package(impetus REQUIRED)` and link `impetus::impetus`.
+# another project can `find_package(impetus REQUIRED)` and link `impetus::impetus`, and, where
+# they were built, the optional impetus::geo and impetus::audio (components "geo" and "audio").
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -15,6 +16,25 @@ endif()
 
 set(IMPETUS_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/impetus)
 install(EXPORT impetusTargets NAMESPACE impetus:: DESTINATION ${IMPETUS_CMAKE_DIR})
+
+# The optional targets each in an export set of their own, so that the config file loads one
+# only when its dependencies are found on the consumer's machine (a consumer of the core alone
+# needs neither GeographicLib nor OpenAL). impetusConfig.cmake learns which were built from
+# IMPETUS_BUILT_GEO / IMPETUS_BUILT_AUDIO.
+set(IMPETUS_BUILT_GEO OFF)
+set(IMPETUS_BUILT_AUDIO OFF)
+foreach(component geo audio)
+  if(TARGET impetus_${component})
+    string(TOUPPER ${component} upper)
+    set(IMPETUS_BUILT_${upper} ON)
+    install(TARGETS impetus_${component} EXPORT impetus_${component}Targets
+      ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+      LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+      INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+    install(EXPORT impetus_${component}Targets NAMESPACE impetus:: DESTINATION ${IMPETUS_CMAKE_DIR})
+  endif()
+endforeach()
+
 configure_package_config_file(cmake/impetusConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/impetusConfig.cmake INSTALL_DESTINATION ${IMPETUS_CMAKE_DIR})
 write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/impetusConfigVersion.cmake

@@ -1,5 +1,7 @@
 # Installs the build tree into a scratch prefix, builds a separate consumer project against it
-# with find_package(impetus), and runs the consumer. Arguments: BUILD_DIR, SOURCE_DIR, WORK_DIR.
+# with find_package(impetus), and runs the consumer. Arguments: BUILD_DIR, SOURCE_DIR, WORK_DIR;
+# EXPECT_GEO and EXPECT_AUDIO (1 when the build made impetus::geo / impetus::audio) have the
+# consumer ask for those components and run a program linking each.
 file(REMOVE_RECURSE "${WORK_DIR}")
 function(step)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -12,8 +14,22 @@ step(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix")
 if(NOT EXISTS "${WORK_DIR}/prefix/lib/cmake/impetus/impetusConfig.cmake")
   message(FATAL_ERROR "impetusConfig.cmake was not installed")
 endif()
+set(with_geo OFF)
+set(with_audio OFF)
+if(EXPECT_GEO)
+  set(with_geo ON)
+endif()
+if(EXPECT_AUDIO)
+  set(with_audio ON)
+endif()
 step(${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/install/consumer" -B "${WORK_DIR}/build" -G Ninja
      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix
-     -DEXAMPLE_SOURCE=${SOURCE_DIR}/examples/minimal.cpp)
+     -DEXAMPLE_SOURCE=${SOURCE_DIR}/examples/minimal.cpp -DWITH_GEO=${with_geo} -DWITH_AUDIO=${with_audio})
 step(${CMAKE_COMMAND} --build "${WORK_DIR}/build")
 step("${WORK_DIR}/build/consumer")
+if(with_geo)
+  step("${WORK_DIR}/build/consumer_geo")
+endif()
+if(with_audio)
+  step("${WORK_DIR}/build/consumer_audio" "${WORK_DIR}/tone.wav")
+endif()
