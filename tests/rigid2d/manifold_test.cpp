@@ -101,7 +101,7 @@ std::vector<Vec2d> worldCore(const Polygon& p, const Transform2f& xf) {
     const Vec2f l = p.vertices[static_cast<std::size_t>(i)];
     const double c = xf.q.c;
     const double s = xf.q.s;
-    v.push_back({c * l.x - s * l.y + xf.p.x, s * l.x + c * l.y + xf.p.y});
+    v.emplace_back(c * l.x - s * l.y + xf.p.x, s * l.x + c * l.y + xf.p.y);
   }
   return v;
 }

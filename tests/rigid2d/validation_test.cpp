@@ -336,9 +336,10 @@ TEST(Rigid2dValidation, shapes) {
        })},
       {"polygon.vertices", "2", on([](Fixture& x) { // a pentagram: every turn left, twice round
          std::vector<Vec2f> star;
+         star.reserve(5);
          for (int k = 0; k < 5; ++k) {
            const float a = 2.0f * 0.6283185f * static_cast<float>(2 * k); // every second point of a pentagon
-           star.push_back({std::cos(a), std::sin(a)});
+           star.emplace_back(std::cos(a), std::sin(a));
          }
          x.world.createShape(x.a, {}, byHand(star));
        })},
@@ -460,7 +461,7 @@ TEST(Rigid2dValidation, shape_makers_and_mass) {
 // 1e26 kg, I = m s^2 / 6 = 1.7e37 kg m^2, a tenth of float's limit (computeMass integrates in
 // double and rounds once: relative error below 1e-7, checked to 1e-6).
 TEST(Rigid2dValidation, a_density_refused_for_its_mass_leaves_the_world_as_it_was) {
-  const double rho = static_cast<double>(1e14f);
+  const auto rho = static_cast<double>(1e14f);
   const double side = 1e6;
   const MassData largest = computeMass(makeBox(5e5f, 5e5f), 1e14f);
   EXPECT_NEAR(largest.mass, rho * side * side, 1e-6 * rho * side * side);
