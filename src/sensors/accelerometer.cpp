@@ -23,6 +23,10 @@ double clipReading(double trueG, double range) {
 }
 
 bool isClipped(double value, double range, double tolerance) {
+  // +-infinity is a (very) clipped reading; NaN is no reading and compared false.
+  if (std::isnan(value)) {
+    throwInvalid("value", value, "must not be NaN");
+  }
   requirePositive(range, "range");
   requireNonNegative(tolerance, "tolerance");
   return std::abs(value) >= range - tolerance;
@@ -48,9 +52,9 @@ std::vector<double> fillClippedGaps(std::span<const double> samples, double rang
     }
     // Run [i, end). Needs a good sample on both sides, and two for the slopes.
     if (i >= 2 && end + 1 < n) {
-      const std::size_t a = i - 1;                 // last good before
-      const std::size_t b = end;                   // first good after
-      const double h = static_cast<double>(b - a); // in samples
+      const std::size_t a = i - 1;               // last good before
+      const std::size_t b = end;                 // first good after
+      const auto h = static_cast<double>(b - a); // in samples
       const double slopeA = samples[a] - samples[a - 1];
       const double slopeB = samples[b + 1] - samples[b];
       for (std::size_t k = i; k < end; ++k) {

@@ -21,10 +21,17 @@ void requireCell(const LoadCell& c) {
   requireFinite(c.zeroBalance, "zeroBalance");
 }
 
+void requireKind(BridgeKind kind) {
+  if (kind != BridgeKind::quarter && kind != BridgeKind::half && kind != BridgeKind::full) {
+    throwInvalid("kind", static_cast<int>(kind), "is not a BridgeKind (quarter, half or full)");
+  }
+}
+
 } // namespace
 
 double bridgeOutputRatio(double strain, double gaugeFactor, BridgeKind kind) {
   requireGaugeStrain(strain, gaugeFactor);
+  requireKind(kind);
   const double x = gaugeFactor * strain; // dR / R
   switch (kind) {
   case BridgeKind::quarter:
@@ -42,6 +49,7 @@ double bridgeOutputRatio(double strain, double gaugeFactor, BridgeKind kind) {
 double strainFromBridge(double outputRatio, double gaugeFactor, BridgeKind kind) {
   requireFinite(outputRatio, "outputRatio");
   requirePositive(gaugeFactor, "gaugeFactor");
+  requireKind(kind);
   double x = 0.0;
   switch (kind) {
   case BridgeKind::quarter:

@@ -1,6 +1,8 @@
 #include <impetus/error.hpp>
 #include <impetus/sensors/moving_average.hpp>
 
+#include <cmath>
+
 namespace impetus::sensors {
 
 WeightedMovingAverage::WeightedMovingAverage(std::vector<double> weights) : weights_(std::move(weights)) {
@@ -14,6 +16,10 @@ WeightedMovingAverage::WeightedMovingAverage(std::vector<double> weights) : weig
   }
   if (!(sum > 0.0)) {
     throwInvalid("weights", sum, "must not all be zero");
+  }
+  // Their sum divides every average: an overflowing one would make each inf / inf = NaN.
+  if (!std::isfinite(sum)) {
+    throwInvalid("weights", sum, "must have a finite sum");
   }
 }
 

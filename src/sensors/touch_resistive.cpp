@@ -1,16 +1,28 @@
 #include <impetus/error.hpp>
 #include <impetus/sensors/touch_resistive.hpp>
 
+#include <string>
+
 namespace impetus::sensors {
 namespace {
 
-void requireAxis(const AxisRange& axis) {
-  requirePositive(axis.length, "length");
-  requireFinite(axis.minVoltage, "minVoltage");
-  requireFinite(axis.maxVoltage, "maxVoltage");
+/// `prefix` names the panel's axis ("x.") when the range is part of a panel.
+void requireAxis(const AxisRange& axis, const std::string& prefix = {}) {
+  requirePositive(axis.length, prefix + "length");
+  requireFinite(axis.minVoltage, prefix + "minVoltage");
+  requireFinite(axis.maxVoltage, prefix + "maxVoltage");
   if (axis.maxVoltage == axis.minVoltage) {
-    throwInvalid("maxVoltage", axis.maxVoltage, "must differ from minVoltage (no voltage gradient)");
+    throwInvalid(prefix + "maxVoltage", axis.maxVoltage, "must differ from minVoltage (no voltage gradient)");
   }
+}
+
+/// A panel's two axes and readings under their own names ("y.length", "voltageX"), before
+/// positionFromVoltage would name them "length" and "voltage".
+void requirePanelAxes(const AxisRange& x, const AxisRange& y, double voltageX, double voltageY) {
+  requireAxis(x, "x.");
+  requireAxis(y, "y.");
+  requireFinite(voltageX, "voltageX");
+  requireFinite(voltageY, "voltageY");
 }
 
 } // namespace
@@ -38,6 +50,7 @@ TouchPoint readFourWire(const FourWirePanel& panel, const FourWireReading& readi
   requirePositive(panel.referenceVolts, "referenceVolts");
   requireFinite(reading.z1, "z1");
   requireFinite(reading.z2, "z2");
+  requirePanelAxes(panel.x, panel.y, reading.voltageX, reading.voltageY);
   TouchPoint p;
   p.position = {positionFromVoltage(reading.voltageX, panel.x), positionFromVoltage(reading.voltageY, panel.y)};
   if (reading.z1 > 0.0) {
@@ -50,6 +63,7 @@ TouchPoint readFiveWire(const FiveWirePanel& panel, const FiveWireReading& readi
   requirePositive(panel.pullupOhms, "pullupOhms");
   requirePositive(panel.referenceVolts, "referenceVolts");
   requireNonNegative(reading.wiper, "wiper");
+  requirePanelAxes(panel.x, panel.y, reading.voltageX, reading.voltageY);
   TouchPoint p;
   p.position = {positionFromVoltage(reading.voltageX, panel.x), positionFromVoltage(reading.voltageY, panel.y)};
   // Divider R_pullup over R_c: V_w = V_ref R_c / (R_c + R_pullup).

@@ -38,7 +38,8 @@ namespace impetus::sensors {
 /// +-`range` (g, > 0: a zero range is rejected, field "range").
 [[nodiscard]] double clipReading(double trueG, double range);
 
-/// Whether a reported value sits at the limit (|value| >= range - tolerance). range > 0.
+/// Whether a reported value sits at the limit (|value| >= range - tolerance). range > 0; a NaN
+/// value is refused (field "value").
 [[nodiscard]] bool isClipped(double value, double range, double tolerance = 1e-9);
 
 /// Bridges each run of clipped samples (|x| >= range - tolerance) of an evenly sampled signal

@@ -17,27 +17,23 @@
 // sampled at h = T or T/2 has a central slope of zero everywhere (aliasing).
 //
 // Each function works on doubles, Vec2d or Vec3d, and throws impetus::Error (field "h", "h1" or
-// "h2") unless the steps are finite and positive, or "x" when a sample is not finite.
+// "h2") unless the steps are finite and positive, or "x" ("x.y" for a vector's component) when a sample is not finite.
 #pragma once
 
 #include <impetus/error.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/math/vec2.hpp>
 #include <impetus/math/vec3.hpp>
 
-#include <cmath>
 #include <initializer_list>
 
 namespace impetus::sensors {
 
 namespace detail {
-inline bool finiteSample(double x) noexcept { return std::isfinite(x); }
-inline bool finiteSample(const Vec2d& x) noexcept { return isFinite(x); }
-inline bool finiteSample(const Vec3d& x) noexcept { return isFinite(x); }
+/// "x = nan: must be finite" (a vector sample names its component, "x.y").
 template <class V> void requireSamples(std::initializer_list<V> xs) {
   for (const V& x : xs) {
-    if (!finiteSample(x)) {
-      throw Error("x", "x: a sample is not finite");
-    }
+    requireFinite(x, "x");
   }
 }
 } // namespace detail

@@ -20,7 +20,7 @@ namespace impetus::sensors {
 enum class BridgeKind { quarter, half, full };
 
 /// V_out / V_ex of a bridge at strain eps (|GF eps| < 1, GF > 0). Throws impetus::Error naming
-/// "strain" or "gaugeFactor".
+/// "strain", "gaugeFactor" or "kind" (a value outside BridgeKind).
 [[nodiscard]] double bridgeOutputRatio(double strain, double gaugeFactor, BridgeKind kind);
 
 /// The strain that gives V_out / V_ex = ratio (the inverse of bridgeOutputRatio).

@@ -17,7 +17,8 @@ namespace impetus::sensors {
 
 class WeightedMovingAverage {
 public:
-  /// `weights[0]` for the newest sample. Each weight >= 0, their sum > 0, at most 100000 of them.
+  /// `weights[0]` for the newest sample. Each weight >= 0, their sum > 0 and finite, at most
+  /// 100000 of them.
   /// Throws impetus::Error (field "weights").
   explicit WeightedMovingAverage(std::vector<double> weights);
 

@@ -67,7 +67,8 @@ struct TouchPoint {
 };
 
 /// Position and contact resistance. z1 <= 0 means no contact: touchOhms is then empty. Throws
-/// impetus::Error naming the field for non-finite voltages or a bad panel.
+/// impetus::Error naming the field for non-finite voltages or a bad panel ("voltageX",
+/// "y.maxVoltage", ...).
 [[nodiscard]] TouchPoint readFourWire(const FourWirePanel& panel, const FourWireReading& reading);
 
 /// R_touch = R_x-plate (x / L) (Z2 / Z1 - 1), ohm, x measured from the X- (grounded) bar. Z1 > 0
