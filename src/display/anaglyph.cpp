@@ -33,13 +33,26 @@ double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
 
 } // namespace
 
-double srgbToLinear(double v) noexcept { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
+double srgbToLinear(double encoded) noexcept {
+  return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
 
-double linearToSrgb(double v) noexcept { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055; }
+double linearToSrgb(double linear) noexcept {
+  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
 
 Rgb anaglyph(const Rgb& left, const Rgb& right, AnaglyphMode mode, AnaglyphEncoding encoding) {
   requirePixel(left, "left");
   requirePixel(right, "right");
+  // An enum value cast from an out-of-range integer would otherwise give black or skip the
+  // sRGB conversion silently.
+  if (static_cast<int>(mode) < static_cast<int>(AnaglyphMode::trueAnaglyph) ||
+      static_cast<int>(mode) > static_cast<int>(AnaglyphMode::dubois)) {
+    throwInvalid("mode", static_cast<int>(mode), "is not an AnaglyphMode");
+  }
+  if (encoding != AnaglyphEncoding::srgb && encoding != AnaglyphEncoding::linear) {
+    throwInvalid("encoding", static_cast<int>(encoding), "is not an AnaglyphEncoding");
+  }
   switch (mode) {
   case AnaglyphMode::trueAnaglyph:
     return {luma(left), 0.0, luma(right)};
@@ -73,6 +86,9 @@ void anaglyphImage(std::span<const Rgb> left, std::span<const Rgb> right, std::s
     throwInvalid("out", static_cast<double>(out.size()), "must have as many pixels as left");
   }
   for (std::size_t i = 0; i < left.size(); ++i) {
+    // The pixel at fault by its index, as arrays are named elsewhere ("left[3]").
+    requirePixel(left[i], "left[" + std::to_string(i) + "]");
+    requirePixel(right[i], "right[" + std::to_string(i) + "]");
     out[i] = anaglyph(left[i], right[i], mode, encoding);
   }
 }

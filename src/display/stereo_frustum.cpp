@@ -13,6 +13,9 @@ Vec3d rightVector(const CameraPose& pose) {
   requireFinite(pose.position, "position");
   requireFinite(pose.forward, "forward");
   requireFinite(pose.up, "up");
+  if (lengthSquared(pose.forward) == 0.0) {
+    throwInvalid("forward", 0.0, "must not be zero (the camera looks nowhere)");
+  }
   const Vec3d r = normalize(cross(pose.forward, pose.up));
   if (lengthSquared(r) == 0.0) {
     throwInvalid("up", 0.0, "must not be parallel to forward (or zero)");

@@ -41,12 +41,12 @@ enum class AnaglyphEncoding { srgb, linear };
 [[nodiscard]] double linearToSrgb(double linear) noexcept;
 
 /// One pixel. Throws impetus::Error (field "left" or "right") when a channel is outside [0, 1] or
-/// not finite.
+/// not finite, "mode" or "encoding" for a value outside its enumeration.
 [[nodiscard]] Rgb anaglyph(const Rgb& left, const Rgb& right, AnaglyphMode mode,
                            AnaglyphEncoding encoding = AnaglyphEncoding::srgb);
 
 /// A whole image (the three spans of equal size, row by row). Throws impetus::Error naming
-/// "right" or "out" when the sizes differ, or as `anaglyph` for a bad pixel.
+/// "right" or "out" when the sizes differ, or the bad pixel by its index ("left[3]").
 void anaglyphImage(std::span<const Rgb> left, std::span<const Rgb> right, std::span<Rgb> out, AnaglyphMode mode,
                    AnaglyphEncoding encoding = AnaglyphEncoding::srgb);
 
