@@ -106,10 +106,7 @@ PseudorangeFix solve(std::span<const Vec3d> satellites, std::span<const double> 
   }
   requirePositive(options.tolerance, "tolerance");
   requirePositive(options.speedOfLight, "speedOfLight");
-  const Vec3d& p0 = options.initialPosition;
-  if (!(std::isfinite(p0.x) && std::isfinite(p0.y) && std::isfinite(p0.z))) {
-    throwInvalid("initialPosition", length(p0), "must be finite");
-  }
+  const Vec3d& p0 = requireFinite(options.initialPosition, "initialPosition");
   requireFinite(options.initialRangeBias, "initialRangeBias");
 
   double x[4] = {p0.x, p0.y, dim == 3 ? p0.z : 0.0, options.initialRangeBias};
@@ -291,11 +288,13 @@ std::array<Vec3d, 2> trilaterate(const std::array<Vec3d, 3>& centres, const std:
 }
 
 double pseudorange(const Vec3d& receiver, const Vec3d& satellite, double clockBias, double speedOfLight) {
+  requireFinite(receiver, "receiver");
+  requireFinite(satellite, "satellite");
   requireFinite(clockBias, "clockBias");
   requirePositive(speedOfLight, "speedOfLight");
   const double r = distance(receiver, satellite);
   if (!std::isfinite(r)) {
-    throwInvalid("receiver", r, "receiver and satellite must be finite");
+    throwInvalid("satellite", r, "is too far from the receiver: the distance overflows a double");
   }
   return r + speedOfLight * clockBias;
 }
@@ -310,7 +309,7 @@ PseudorangeFix solvePseudoranges(std::span<const Vec2d> satellites, std::span<co
   std::vector<Vec3d> flat;
   flat.reserve(satellites.size());
   for (const Vec2d& s : satellites) {
-    flat.push_back({s.x, s.y, 0.0});
+    flat.emplace_back(s.x, s.y, 0.0);
   }
   return solve(flat, pseudoranges, 2, options);
 }
