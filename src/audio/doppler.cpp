@@ -1,20 +1,12 @@
 #include <impetus/audio/doppler.hpp>
 #include <impetus/error.hpp>
 #include <impetus/math/scalar.hpp>
+#include <impetus/math/validate.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace impetus::audio {
-namespace {
-
-void requireFinitePoint(const Vec3d& v, const char* field) {
-  if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))) {
-    throwInvalid(field, length(v), "must be finite");
-  }
-}
-
-} // namespace
 
 double dopplerFrequency(double frequency, double sourceSpeedTowardListener, double listenerSpeedTowardSource,
                         double speedOfSound) {
@@ -35,10 +27,10 @@ double dopplerFrequency(double frequency, double sourceSpeedTowardListener, doub
 
 double dopplerFrequency(double frequency, const Vec3d& sourcePosition, const Vec3d& sourceVelocity,
                         const Vec3d& listenerPosition, const Vec3d& listenerVelocity, double speedOfSound) {
-  requireFinitePoint(sourcePosition, "sourcePosition");
-  requireFinitePoint(sourceVelocity, "sourceVelocity");
-  requireFinitePoint(listenerPosition, "listenerPosition");
-  requireFinitePoint(listenerVelocity, "listenerVelocity");
+  requireFinite(sourcePosition, "sourcePosition");
+  requireFinite(sourceVelocity, "sourceVelocity");
+  requireFinite(listenerPosition, "listenerPosition");
+  requireFinite(listenerVelocity, "listenerVelocity");
   const Vec3d sl = listenerPosition - sourcePosition;
   const double d = length(sl);
   if (!(d > 0.0)) {
@@ -54,10 +46,10 @@ double openALDopplerFrequency(double frequency, const Vec3d& sourcePosition, con
   requirePositive(frequency, "frequency");
   requirePositive(speedOfSound, "speedOfSound");
   requireNonNegative(dopplerFactor, "dopplerFactor");
-  requireFinitePoint(sourcePosition, "sourcePosition");
-  requireFinitePoint(sourceVelocity, "sourceVelocity");
-  requireFinitePoint(listenerPosition, "listenerPosition");
-  requireFinitePoint(listenerVelocity, "listenerVelocity");
+  requireFinite(sourcePosition, "sourcePosition");
+  requireFinite(sourceVelocity, "sourceVelocity");
+  requireFinite(listenerPosition, "listenerPosition");
+  requireFinite(listenerVelocity, "listenerVelocity");
   const Vec3d sl = listenerPosition - sourcePosition;
   const double mag = length(sl);
   if (dopplerFactor == 0.0 || mag == 0.0) {

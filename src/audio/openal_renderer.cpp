@@ -46,6 +46,8 @@ ALenum distanceModelEnum(DistanceModel m) {
   return AL_INVERSE_DISTANCE_CLAMPED;
 }
 
+constexpr double maxClipSeconds = 3600.0;
+
 void requireFiniteVector(const Vec3d& v, const char* field) {
   if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))) {
     throwInvalid(field, length(v), "must be finite");
@@ -185,8 +187,11 @@ LoopbackRenderer::SourceId LoopbackRenderer::addSource(const AudioClip& clip, co
   if (clip.channels != 1) {
     throwInvalid("clip", clip.channels, "a positional source must be mono (channels given)");
   }
-  if (clip.sampleRate <= 0 || clip.samples.empty()) {
-    throwInvalid("clip", static_cast<double>(clip.samples.size()), "must have samples and a positive sample rate");
+  if (clip.sampleRate <= 0) {
+    throwInvalid("clip", clip.sampleRate, "must have a positive sample rate (rate given)");
+  }
+  if (clip.samples.empty()) {
+    throwInvalid("clip", 0.0, "must have samples (sample count given)");
   }
   requireNonNegative(settings.gain, "gain");
   const DistanceAttenuation& a = settings.attenuation;
@@ -230,8 +235,11 @@ LoopbackRenderer::SourceId LoopbackRenderer::addSource(const AudioClip& clip, co
 void LoopbackRenderer::setListener(const Motion& motion, const Vec3d& forward, const Vec3d& up) {
   requireFiniteVector(forward, "forward");
   requireFiniteVector(up, "up");
-  if (!(length(forward) > 0.0) || !(length(cross(forward, up)) > 0.0)) {
-    throwInvalid("forward", length(forward), "forward and up must be non-zero and not parallel");
+  if (!(length(forward) > 0.0)) {
+    throwInvalid("forward", length(forward), "must be non-zero (length given)");
+  }
+  if (!(length(cross(forward, up)) > 0.0)) {
+    throwInvalid("up", length(up), "must be non-zero and not parallel to forward (length given)");
   }
   impl_->makeCurrent();
   Impl::applyListener(motion);
@@ -305,6 +313,11 @@ AudioClip loopingTone(double frequency, int sampleRate, double seconds, double a
     throwInvalid("sampleRate", sampleRate, "must be positive");
   }
   requirePositive(seconds, "seconds");
+  // The clip is held in memory: an hour is 159 million frames at 44.1 kHz (a larger value
+  // would overflow the frame count or exhaust memory rather than be refused).
+  if (seconds > maxClipSeconds) {
+    throwInvalid("seconds", seconds, "must be at most 3600 s");
+  }
   if (!(frequency < 0.5 * sampleRate)) {
     throwInvalid("frequency", frequency, "must be below the Nyquist frequency, half the sample rate");
   }

@@ -13,7 +13,15 @@ double passByDuration(double speed) {
 }
 
 PassByRender renderPassBy(const PassBy& pass, double duration, int sampleRate) {
+  // The renderer's range, checked first: the Nyquist test below would blame "frequency".
+  if (sampleRate < 8000 || sampleRate > 192000) {
+    throwInvalid("sampleRate", sampleRate, "must be within 8000..192000 Hz");
+  }
   requirePositive(duration, "duration");
+  // The rendering is held in memory (an hour of stereo float at 44.1 kHz is 1.3 GB).
+  if (duration > 3600.0) {
+    throwInvalid("duration", duration, "must be at most 3600 s");
+  }
   PassByRender out;
   out.pass = pass;
   out.pass.closestTime = 0.5 * duration;

@@ -1,6 +1,8 @@
 #include <impetus/audio/pitch.hpp>
 #include <impetus/error.hpp>
 
+#include <cmath>
+
 namespace impetus::audio {
 
 PitchEstimate zeroCrossingPitch(std::span<const float> samples, double sampleRate) {
@@ -16,6 +18,12 @@ PitchEstimate zeroCrossingPitch(std::span<const float> samples, double sampleRat
   double first = 0.0;
   double last = 0.0;
   int crossings = 0;
+  // A NaN compares false and would be skipped, an infinity would put a crossing at NaN.
+  for (std::size_t i = begin; i < begin + count; ++i) {
+    if (!std::isfinite(samples[i])) {
+      throwInvalid("samples", samples[i], "must be finite");
+    }
+  }
   for (std::size_t i = begin + 1; i < begin + count; ++i) {
     const double a = samples[i - 1];
     const double b = samples[i];

@@ -85,6 +85,10 @@ double distanceGain(const DistanceAttenuation& a, double distance) {
   requireNonNegative(a.rolloff, "rolloff");
   const double ref = a.referenceDistance;
   const double max = a.maxDistance;
+  if (static_cast<int>(a.model) < static_cast<int>(DistanceModel::none) ||
+      static_cast<int>(a.model) > static_cast<int>(DistanceModel::exponentClamped)) {
+    throwInvalid("model", static_cast<int>(a.model), "is not a DistanceModel");
+  }
   const bool clamped = a.model == DistanceModel::inverseClamped || a.model == DistanceModel::linearClamped ||
                        a.model == DistanceModel::exponentClamped;
   if (clamped && max < ref) {

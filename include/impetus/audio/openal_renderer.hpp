@@ -88,8 +88,8 @@ private:
 };
 
 /// A tone of `frequency` (Hz) as a mono clip that loops seamlessly: a whole number of periods
-/// in about `seconds` (the period count rounded, so the tone is f within 0.5 / frames). Peak
-/// `amplitude` (0..1].
+/// in about `seconds` (0 < seconds <= 3600; the period count rounded, so the tone is f within
+/// 0.5 / frames). Peak `amplitude` (0..1].
 [[nodiscard]] AudioClip loopingTone(double frequency, int sampleRate = 44100, double seconds = 1.0,
                                     double amplitude = 0.5);
 

@@ -20,9 +20,10 @@ struct PassByRender {
   double toneFrequency = 0; ///< the looping tone's exact frequency (f within 0.5/44100), Hz
 };
 
-/// Renders the pass over `duration` s (> 0). pass.closestTime is ignored (set to duration/2);
-/// pass.speedOfSound sets the renderer's. Throws impetus::Error for an invalid pass (speed at
-/// or above c), duration or an unavailable OpenAL device ("device").
+/// Renders the pass over `duration` s (0 < duration <= 3600) at `sampleRate` Hz (8000..192000).
+/// pass.closestTime is ignored (set to duration/2); pass.speedOfSound sets the renderer's.
+/// Throws impetus::Error for an invalid pass (speed at or above c), duration, sample rate or an
+/// unavailable OpenAL device ("device").
 [[nodiscard]] PassByRender renderPassBy(const PassBy& pass, double duration, int sampleRate = 44100);
 
 /// The default duration for a pass at `speed` (m/s): the source starts about 200 m away

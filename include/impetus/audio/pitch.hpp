@@ -18,7 +18,8 @@ struct PitchEstimate {
 };
 
 /// The frequency of the tone in `samples` (sampled at sampleRate Hz, > 0). Throws
-/// impetus::Error naming "samples" when there are fewer than two upward zero crossings.
+/// impetus::Error naming "samples" when there are fewer than two upward zero crossings or a
+/// sample is not finite.
 [[nodiscard]] PitchEstimate zeroCrossingPitch(std::span<const float> samples, double sampleRate);
 
 /// The same over samples [begin, begin + count) of a signal.
