@@ -3,6 +3,7 @@
 #include "rigid2d/world_impl.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace impetus::rigid2d::detail {
@@ -31,6 +32,54 @@ bool behindChain(const Shape& s, const Transform2f& xf, const Vec2f& start) {
   const Vec2f edge = chain->segment.point2 - chain->segment.point1;
   const Vec2f freeSide{edge.y, -edge.x}; // rightPerp: the free side (chain.hpp)
   return dot(freeSide, local - chain->segment.point1) < 0.0f;
+}
+
+/// Where a point lies against a shape inflated by `skin` (shape frame): its signed distance to
+/// the surface (negative inside) and the outward normal of the nearest surface.
+struct PointDepth {
+  float separation = 0.0f;
+  Vec2f normal;
+};
+
+PointDepth segmentDepth(const Vec2f& p, const Vec2f& a, const Vec2f& b, float radius) {
+  const Vec2f e = b - a;
+  const float ee = lengthSquared(e);
+  const float t = ee > 0.0f ? std::clamp(dot(p - a, e) / ee, 0.0f, 1.0f) : 0.0f;
+  const Vec2f offset = p - (a + e * t);
+  const float d = length(offset);
+  // On the core itself the normal is undefined: take the segment's left normal (either would do).
+  const Vec2f normal = d > 0.0f ? offset * (1.0f / d) : (ee > 0.0f ? normalize(Vec2f{-e.y, e.x}) : Vec2f{0.0f, 1.0f});
+  return {d - radius, normal};
+}
+
+PointDepth pointDepth(const ShapeGeometry& geometry, const Vec2f& p, float skin) {
+  return std::visit(
+      [&](const auto& g) -> PointDepth {
+        using G = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<G, Circle>) {
+          return segmentDepth(p, g.center, g.center, g.radius + skin);
+        } else if constexpr (std::is_same_v<G, Capsule>) {
+          return segmentDepth(p, g.center1, g.center2, g.radius + skin);
+        } else if constexpr (std::is_same_v<G, Segment>) {
+          return segmentDepth(p, g.point1, g.point2, skin);
+        } else if constexpr (std::is_same_v<G, ChainSegment>) {
+          return segmentDepth(p, g.segment.point1, g.segment.point2, skin);
+        } else {
+          // A polygon: the face the point is least deep behind (exact inside; outside, the
+          // separating face, enough to tell inside from out).
+          PointDepth best{-std::numeric_limits<float>::max(), {}};
+          for (int i = 0; i < g.count; ++i) {
+            const auto k = static_cast<std::size_t>(i);
+            const float sep = dot(g.normals[k], p - g.vertices[k]);
+            if (sep > best.separation) {
+              best = {sep, g.normals[k]};
+            }
+          }
+          best.separation -= g.radius + skin;
+          return best;
+        }
+      },
+      geometry);
 }
 
 } // namespace
@@ -82,12 +131,30 @@ float computeCoreRadius(const WorldState& w, const Body& b) {
 /// still keeps the centre on its side of the thinnest wall; the contacts do the rest.
 Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start, const Vec2f& end) {
   const float core = b.coreRadius;
-  const Vec2f motion = end - start;
-  if (core <= 0.0f || lengthSquared(motion) <= core * core) {
+  if (core <= 0.0f || lengthSquared(end - start) <= core * core) {
     return end; // slow: the discrete contacts see everything it can meet
   }
   const float skin = 0.25f * core;
   const AABB swept = enlarge({min(start, end), max(start, end)}, skin);
+  // A centre already inside a static shape's skin (a body pushed into a wall by a joint or by
+  // a blow, or a long body turning into the floor) is out of the rays' reach: a ray from inside
+  // sees no surface, and the centre went on through the wall (the jointed soak's escapes at
+  // 250-400 m/s). It may move along the surface it is nearest to or out, not deeper: the
+  // motion loses its component into that surface, and the contacts push it out.
+  Vec2f motion = end - start;
+  w.staticTree.query(swept, [&](std::int32_t, std::uint64_t slot64) {
+    const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
+    const Body& other = w.bodies[s.body];
+    if (other.type != BodyType::staticBody || !mayCollide(w, b, s) || behindChain(s, other.transform, start)) {
+      return true;
+    }
+    const PointDepth depth = pointDepth(s.geometry, inverseTransformPoint(other.transform, start), skin);
+    if (depth.separation < 0.0f) {
+      const Vec2f normal = rotate(other.transform.q, depth.normal);
+      motion -= normal * std::min(dot(motion, normal), 0.0f);
+    }
+    return true;
+  });
   float first = 1.0f;
   w.staticTree.query(swept, [&](std::int32_t, std::uint64_t slot64) {
     const Shape& s = w.shapes[static_cast<std::size_t>(slot64)];
@@ -121,7 +188,7 @@ Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start,
     return true;
   });
   if (first >= 1.0f) {
-    return end;
+    return start + motion;
   }
   // Stop a linear slop short of the surface, along the motion.
   const float travelled = std::max(0.0f, first * length(motion) - linearSlop);

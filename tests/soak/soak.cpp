@@ -4,6 +4,7 @@
 // bodies destroyed and created while others sleep, rest and collide.
 //
 //   impetus-soak [--seconds S] [--seed N] [--episode-seconds T] [--threads K] [--joints on|off] [--prismatic on|off]
+//                [--episodes N]        (exactly N episodes, whatever the time: what CI runs)
 //                [--first-episode N]   (start at episode N: a failure's reproduction)
 //
 // Each episode builds a world from (seed, episode) alone, so any failure is reproduced by its
@@ -423,7 +424,7 @@ void trace(const Episode& e, std::int64_t step) {
 int usage(const std::string& why) {
   std::fprintf(stderr,
                "impetus-soak: %s\nusage: impetus-soak [--seconds S] [--seed N] [--episode-seconds T] "
-               "[--threads K] [--joints on|off] [--prismatic on|off] [--first-episode N]\n",
+               "[--threads K] [--joints on|off] [--prismatic on|off] [--episodes N] [--first-episode N]\n",
                why.c_str());
   return 2;
 }
@@ -438,6 +439,7 @@ int main(int argc, char** argv) {
   bool joints = true;
   bool prismatic = true;
   long long firstEpisode = 0;
+  long long episodeCount = 0; // 0: as many as fit in --seconds
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (i + 1 >= argc) {
@@ -451,6 +453,8 @@ int main(int argc, char** argv) {
       seed = std::strtoull(value.c_str(), &end, 10);
     } else if (arg == "--episode-seconds") {
       episodeSeconds = std::strtod(value.c_str(), &end);
+    } else if (arg == "--episodes") {
+      episodeCount = std::strtoll(value.c_str(), &end, 10);
     } else if (arg == "--first-episode") {
       firstEpisode = std::strtoll(value.c_str(), &end, 10);
     } else if (arg == "--joints") {
@@ -469,7 +473,7 @@ int main(int argc, char** argv) {
     }
   }
   if (!(wallSeconds > 0.0) || !(episodeSeconds > 0.0) || threads < 1 || threads > 64 || firstEpisode < 0 ||
-      firstEpisode > 1000000000) {
+      firstEpisode > 1000000000 || episodeCount < 0 || episodeCount > 1000000000) {
     return usage("--seconds and --episode-seconds must be positive, --threads 1 to 64");
   }
   std::unique_ptr<ThreadPool> pool = threads > 1 ? std::make_unique<ThreadPool>(threads) : nullptr;
@@ -479,7 +483,8 @@ int main(int argc, char** argv) {
   int episodes = static_cast<int>(firstEpisode); // each episode is built from (seed, index) alone
   int closedEpisodes = 0;
   const auto stepsPerEpisode = static_cast<std::int64_t>(episodeSeconds / timeStep);
-  while (elapsed() < wallSeconds) {
+  const long long lastEpisode = firstEpisode + episodeCount;
+  while (episodeCount > 0 ? episodes < lastEpisode : elapsed() < wallSeconds) {
     const int index = episodes++;
     try {
       std::unique_ptr<Episode> e = buildEpisode(seed, index, pool.get(), joints, prismatic);
