@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 
 namespace impetus::rigid2d {
 namespace {
@@ -20,6 +21,30 @@ BodyId addWall(World& world) {
   const BodyId wall = world.createBody({});
   world.createShape(wall, {}, makeOffsetBox(2.5f, 200.0f, {-2.5f, 0.0f}, 0.0f));
   return wall;
+}
+
+/// A dynamic body (no shape yet) at `at`, turned by `angle`, moving at v and w.
+BodyId movingBody(World& world, const Vec2f& at, float angle, const Vec2f& v, float w) {
+  BodyDef def;
+  def.type = BodyType::dynamicBody;
+  def.position = at;
+  def.angle = angle;
+  def.linearVelocity = v;
+  def.angularVelocity = w;
+  return world.createBody(def);
+}
+
+/// The bodies' kinetic energy plus their potential energy m g y in gravity g (m/s^2, along -y),
+/// J, in double.
+double mechanicalEnergy(const World& world, std::initializer_list<BodyId> bodies, double g) {
+  double e = 0.0;
+  for (const BodyId id : bodies) {
+    const Vec2f v = world.linearVelocity(id);
+    const double w = world.angularVelocity(id);
+    e += 0.5 * world.mass(id) * (static_cast<double>(v.x) * v.x + static_cast<double>(v.y) * v.y) +
+         0.5 * world.rotationalInertia(id) * w * w + world.mass(id) * g * world.worldCenterOfMass(id).y;
+  }
+  return e;
 }
 
 /// Steps `steps` times and returns how far the body fell; expects free fall along the wall
@@ -119,12 +144,7 @@ TEST(SoakRegression2D, a_slider_between_a_heavy_pellet_and_a_light_one_loses_ene
   def.gravity = {0.0f, 0.0f};
   World world(def);
   const auto pellet = [&](float mass, const Vec2f& at, const Vec2f& v, float w) {
-    BodyDef body;
-    body.type = BodyType::dynamicBody;
-    body.position = at;
-    body.linearVelocity = v;
-    body.angularVelocity = w;
-    const BodyId id = world.createBody(body);
+    const BodyId id = movingBody(world, at, 0.0f, v, w);
     ShapeDef shape;
     shape.density = mass / (3.14159265f * 0.01f * 0.01f);
     world.createShape(id, shape, Circle{{}, 0.01f});
@@ -141,16 +161,7 @@ TEST(SoakRegression2D, a_slider_between_a_heavy_pellet_and_a_light_one_loses_ene
   slider.lowerTranslation = -1.0f;
   slider.upperTranslation = 1.0f;
   world.createJoint(slider);
-  const auto energy = [&] {
-    double e = 0.0;
-    for (const BodyId id : {a, b}) {
-      const Vec2f v = world.linearVelocity(id);
-      const double w = world.angularVelocity(id);
-      e += 0.5 * world.mass(id) * (static_cast<double>(v.x) * v.x + static_cast<double>(v.y) * v.y) +
-           0.5 * world.rotationalInertia(id) * w * w;
-    }
-    return e;
-  };
+  const auto energy = [&] { return mechanicalEnergy(world, {a, b}, 0.0); };
   const double e0 = energy();
   for (int i = 0; i < 600; ++i) {
     world.step(dt);
@@ -167,13 +178,7 @@ TEST(SoakRegression2D, a_short_slider_on_a_light_capsule_struck_at_speed_loses_e
   // times its energy within three steps (and NaN under the guard-free solver).
   World world;
   const auto body = [&](const Vec2f& at, float angle, const Vec2f& v, float w) {
-    BodyDef def;
-    def.type = BodyType::dynamicBody;
-    def.position = at;
-    def.angle = angle;
-    def.linearVelocity = v;
-    def.angularVelocity = w;
-    return world.createBody(def);
+    return movingBody(world, at, angle, v, w);
   };
   const BodyId capsule = body({-5.87885571f, -41.9014511f}, 2.05270123f, {0.0610729419f, -2.02037787f}, -0.601616859f);
   ShapeDef shape;
@@ -193,17 +198,7 @@ TEST(SoakRegression2D, a_short_slider_on_a_light_capsule_struck_at_speed_loses_e
   slider.lowerTranslation = -0.05f;
   slider.upperTranslation = 0.05f;
   world.createJoint(slider);
-  // Kinetic plus potential energy (g = 10 m/s^2, the world's default).
-  const auto energy = [&] {
-    double e = 0.0;
-    for (const BodyId id : {capsule, wheel}) {
-      const Vec2f v = world.linearVelocity(id);
-      const double w = world.angularVelocity(id);
-      e += 0.5 * world.mass(id) * (static_cast<double>(v.x) * v.x + static_cast<double>(v.y) * v.y) +
-           0.5 * world.rotationalInertia(id) * w * w + world.mass(id) * 10.0 * world.worldCenterOfMass(id).y;
-    }
-    return e;
-  };
+  const auto energy = [&] { return mechanicalEnergy(world, {capsule, wheel}, 10.0); }; // the default gravity
   // The energy is measured from y = -41.9 m; its scale (for the tolerance) is the kinetic part.
   const double e0 = energy();
   const double scale = e0 + (world.mass(capsule) + world.mass(wheel)) * 10.0 * 41.9;
