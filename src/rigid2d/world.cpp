@@ -296,9 +296,10 @@ bool collideContacts(WorldState& w) {
 void synchronizeShapes(WorldState& w, Body& b) {
   for (std::uint32_t slot : b.shapes) {
     Shape& s = w.shapes[slot];
-    const AABB box = shapeBox(s, b.transform);
+    const bool isStatic = b.type == BodyType::staticBody;
+    const AABB box = isStatic ? shapeBox(s, b.transform) : reachBox(s, b.transform);
     if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
-      fatBox = enlarge(box, b.type == BodyType::staticBody ? 0.0f : aabbMargin);
+      fatBox = enlarge(box, isStatic ? 0.0f : aabbMargin);
       w.treeOf(s).moveProxy(s.proxy, fatBox);
       w.moveBuffer.push_back(slot);
     }

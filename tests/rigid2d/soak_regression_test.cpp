@@ -235,5 +235,26 @@ TEST(SoakRegression2D, a_body_whose_centre_is_inside_a_wall_does_not_go_on_throu
   EXPECT_GT(world.worldCenterOfMass(plank).y, 0.0f);
 }
 
+TEST(SoakRegression2D, a_tiny_ball_stopped_just_above_the_floor_comes_to_rest_on_it) {
+  // The one-hour soak's 1% energy episodes (seed 7, episodes 20,507 and 24,212): a 6 mm ball
+  // thrown at the floor was stopped by the static sweep half a millimetre above it, inside a fat
+  // box whose lower edge stopped 0.2 mm short of the floor's: no pair, no contact. It hung there
+  // while gravity wound its velocity up (30 m/s after two seconds, an energy from nowhere). Fat
+  // boxes now hold the shape's bounds grown by the speculative distance, as Box2D v3's do.
+  World world;
+  const BodyId floor = world.createBody({});
+  world.createShape(floor, {}, makeOffsetBox(50.0f, 2.5f, {0.0f, -2.5f}, 0.0f)); // top face y = 0
+  // Placed so that its fat box (its bounds and a 0.1 m margin) ends 0.3 mm above the floor.
+  const BodyId ball = movingBody(world, {0.0f, 0.1063f}, 0.0f, {0.0f, -10.0f}, 0.0f);
+  ShapeDef shape;
+  shape.density = 390000.0f; // 44 kg
+  world.createShape(ball, shape, Circle{{}, 0.006f});
+  for (int i = 0; i < 60; ++i) {
+    world.step(dt);
+  }
+  EXPECT_LT(std::abs(world.linearVelocity(ball).y), 0.1f);
+  EXPECT_NEAR(world.worldCenterOfMass(ball).y, 0.006f, 0.005f); // resting on the floor, within a linear slop
+}
+
 } // namespace
 } // namespace impetus::rigid2d
