@@ -4,11 +4,17 @@
 // it and in angle, a 2-row block keeps B on the line and at the reference angle:
 //   C1 = dot(normal, d) = 0, C2 = angleB - angleA - referenceAngle = 0,
 // solved with the 2x2 effective mass [[mA + mB + iA s1^2 + iB s2^2, iA s1 + iB s2], [., iA + iB]]
-// (s1, s2: the normal impulse's moment arms on A and B), soft at the world's joint stiffness with
-// bias and rigid in velocity without. Along the axis, rows on the translation x = dot(axis, d)
-// with the axial mass 1 / (mA + mB + iA a1^2 + iB a2^2): a spring (soft, toward x = 0), a motor
-// (toward motorSpeed, at most maxMotorForce h per substep) and the two one-sided limits. Since A's
-// line turns with A, the moment arms on A are taken about B's anchor (d + rA), not A's.
+// (s1, s2: the normal impulse's moment arms on A and B), rigid in velocity, with the position
+// error fed back at the joint stiffness's bias rate in the solve pass. Along the axis, rows on
+// the translation x = dot(axis, d) with the axial mass 1 / (mA + mB + iA a1^2 + iB a2^2): a
+// spring (soft, toward x = 0), a motor (toward motorSpeed, at most maxMotorForce h per substep)
+// and the two one-sided limits, each solved with the block held. Since A's line turns with A,
+// the moment arms on A are taken about B's anchor (d + rA), not A's.
+//
+// Three departures from Box2D v3, each found by the soak test (tests/soak) with a slider on a
+// body of little inertia (a 1 cm disc of several kg: inverse inertia 10^4): the block is rigid,
+// the limits hold it, and the relax pass rebases the angular impulse on the moments the bodies
+// got in the substep. Each is explained where it is done; docs/reliability.md, "Soak", fix 9.
 #include "rigid2d/prismatic_joint.hpp"
 
 #include <algorithm>
@@ -69,6 +75,82 @@ void solveTranslationLimit(float& accumulated, float c, float direction, const S
   applyAxial(g, f, a, b, direction * applied);
 }
 
+namespace {
+
+/// Impulses along the axis, across it and in angle (N s, N s, N m s): -P on A and +P on B at B's
+/// anchor, with their moments, plus the angular impulse; their moments about each centre are
+/// added to the substep's tally (`torqueOnA`, `torqueOnB`).
+void applySlider(PrismaticJoint& joint, const SliderGeometry& g, const JointFrame& f, BodyState& a, BodyState& b,
+                 float axial, float normal, float angular) {
+  const Vec2f p = g.axis * axial + g.normal * normal;
+  const float torqueA = axial * g.a1 + normal * g.s1 + angular;
+  const float torqueB = axial * g.a2 + normal * g.s2 + angular;
+  a.v -= p * f.mA;
+  a.w -= f.iA * torqueA;
+  b.v += p * f.mB;
+  b.w += f.iB * torqueB;
+  joint.torqueOnA += torqueA;
+  joint.torqueOnB += torqueB;
+}
+
+float accumulatedAxial(const PrismaticJoint& joint) {
+  return joint.springImpulse + joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+}
+
+/// One translation limit (as solveTranslationLimit) solved with the line-and-angle block held:
+/// the limit's axial impulse comes with the normal and angular impulses that leave the block's
+/// velocities as they were. Alone, a limit on a body with little inertia kicks its spin through
+/// the smallest lever arm (a 1 cm, 4 kg disc carrying a 1 m rail: an axial impulse 5 cm off the
+/// line turns it at thousands of rad/s) and the block, solved next, turns it back, a
+/// Gauss-Seidel pair that gains energy each substep (the soak's sliders). Held, the row's mass
+/// is 1 / S with S = K_aa - K_ab K_bb^-1 K_ba, the Schur complement of the block in the joint's
+/// 3x3 effective mass K (rows: axial, normal, angle), and the update minimises the kinetic
+/// energy along a direction that changes only the limit's speed: it never adds energy in the
+/// relax pass. In double: the block is as badly conditioned as iA (x^2 + 1) / (mA + mB), 10^4 to
+/// 10^8 in such pairs, and S is the small difference of large terms (in float it came out
+/// negative: NaN).
+void solveLimitHoldingBlock(PrismaticJoint& joint, float& accumulated, float c, float direction,
+                            const SliderGeometry& g, const JointFrame& f, BodyState& a, BodyState& b,
+                            const StepContext& context, bool useBias) {
+  const double mass = static_cast<double>(f.mA) + f.mB;
+  const double iA = f.iA;
+  const double iB = f.iB;
+  const double a1 = g.a1, a2 = g.a2, s1 = g.s1, s2 = g.s2;
+  const double kaa = mass + iA * a1 * a1 + iB * a2 * a2;
+  const double kan = iA * a1 * s1 + iB * a2 * s2;
+  const double kaw = iA * a1 + iB * a2;
+  const double knn = mass + iA * s1 * s1 + iB * s2 * s2;
+  const double knw = iA * s1 + iB * s2;
+  const double kww = iA + iB > 0.0 ? iA + iB : 1.0; // neither turns: the angle row is idle
+  const double det = knn * kww - knw * knw;
+  // The block's answer to a unit axial impulse, K_bb^-1 K_ba, and the Schur complement.
+  double holdNormal = 0.0;
+  double holdAngle = 0.0;
+  double schur = kaa;
+  if (det > 1e-12 * knn * kww) {
+    holdNormal = (kww * kan - knw * kaw) / det;
+    holdAngle = (knn * kaw - knw * kan) / det;
+    schur = kaa - (kan * holdNormal + kaw * holdAngle);
+  }
+  if (!(schur > 1e-9 * kaa)) { // rounding: solve the limit alone
+    holdNormal = 0.0;
+    holdAngle = 0.0;
+    schur = kaa;
+  }
+  if (!(schur > 0.0)) {
+    return; // neither body can move along the axis
+  }
+  const auto rowMass = static_cast<float>(1.0 / schur);
+  const float applied = limitImpulse(accumulated, c, direction * axialSpeed(g, a, b), rowMass, context, useBias);
+  const float axial = direction * applied;
+  const auto normal = static_cast<float>(-holdNormal * axial);
+  const auto angular = static_cast<float>(-holdAngle * axial);
+  joint.impulse += Vec2f{normal, angular};
+  applySlider(joint, g, f, a, b, axial, normal, angular);
+}
+
+} // namespace
+
 void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const StepContext& context) {
   joint.axisA = rotate(frame.qA, joint.def.localAxisA);
   joint.solvedAxis = joint.axisA;
@@ -82,14 +164,9 @@ void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
-  const float axial = joint.springImpulse + joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
-  const float normal = joint.impulse.x;
-  const float angular = joint.impulse.y;
-  const Vec2f p = g.axis * axial + g.normal * normal;
-  a.v -= p * frame.mA;
-  a.w -= frame.iA * (axial * g.a1 + normal * g.s1 + angular);
-  b.v += p * frame.mB;
-  b.w += frame.iB * (axial * g.a2 + normal * g.s2 + angular);
+  joint.torqueOnA = 0.0f;
+  joint.torqueOnB = 0.0f;
+  applySlider(joint, g, frame, a, b, accumulatedAxial(joint), joint.impulse.x, joint.impulse.y);
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
 }
@@ -103,7 +180,6 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
   joint.solvedAxis = g.axis;
   const float translation = dot(g.axis, g.d);
   const bool canSlide = joint.axialMass > 0.0f;
-  const float axialMass = sliderAxialMassNow(g, frame);
 
   if (def.enableSpring && canSlide) {
     // A real spring (force -k x - c xdot with k = axialMass omega^2): applied in the relax pass too.
@@ -111,26 +187,28 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
     const float impulse = -soft.massScale * joint.axialMass * (axialSpeed(g, a, b) + soft.biasRate * translation) -
                           soft.impulseScale * joint.springImpulse;
     joint.springImpulse += impulse;
-    applyAxial(g, frame, a, b, impulse);
+    applySlider(joint, g, frame, a, b, impulse, 0.0f, 0.0f);
   }
   if (def.enableMotor && canSlide) {
     const float maxImpulse = context.h * def.maxMotorForce;
     const float old = joint.motorImpulse;
-    joint.motorImpulse = std::clamp(old - axialMass * (axialSpeed(g, a, b) - def.motorSpeed), -maxImpulse, maxImpulse);
-    applyAxial(g, frame, a, b, joint.motorImpulse - old);
+    joint.motorImpulse = std::clamp(old - sliderAxialMassNow(g, frame) * (axialSpeed(g, a, b) - def.motorSpeed),
+                                    -maxImpulse, maxImpulse);
+    applySlider(joint, g, frame, a, b, joint.motorImpulse - old, 0.0f, 0.0f);
   }
 
-  // The line and angle block.
+  // The line and angle block: rigid in velocity in both passes, the position error fed back at
+  // the joint stiffness's bias rate with bias. Not soft, as Box2D v3's: with a body of little
+  // inertia, the soft block (mass scale 0.9 at 60 Hz and 240 substeps a second) left a tenth
+  // of the warm start's error in that body's spin, thousands of rad/s, and the positions
+  // integrated from it turned it half a turn a substep (the soak's sliders: NaN within seconds
+  // on four seeds of five).
   const Vec2f cdot{dot(g.normal, b.v - a.v) + g.s2 * b.w - g.s1 * a.w, b.w - a.w};
   Vec2f bias;
-  float massScale = 1.0f;
-  float impulseScale = 0.0f;
   if (useBias) {
     constexpr float twoPi = 6.28318530717959f;
     const float angleError = std::remainder(frame.deltaAngle + relativeAngle(b.dq, a.dq) - def.referenceAngle, twoPi);
     bias = Vec2f{dot(g.normal, g.d), angleError} * context.jointSoftness.biasRate;
-    massScale = context.jointSoftness.massScale;
-    impulseScale = context.jointSoftness.impulseScale;
   }
   const float k11 = frame.mA + frame.mB + frame.iA * g.s1 * g.s1 + frame.iB * g.s2 * g.s2;
   const float k12 = frame.iA * g.s1 + frame.iB * g.s2;
@@ -138,26 +216,36 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
   if (k22 == 0.0f) {
     k22 = 1.0f; // neither body turns: the angular row is idle, keep K invertible
   }
-  const Vec2f solved = solve22(Mat22f{k11, k12, k12, k22}, cdot + bias);
-  const Vec2f impulse = solved * -massScale - joint.impulse * impulseScale;
+  const Vec2f impulse = -solve22(Mat22f{k11, k12, k12, k22}, cdot + bias);
   joint.impulse += impulse;
-  const Vec2f p = g.normal * impulse.x;
-  a.v -= p * frame.mA;
-  a.w -= frame.iA * (impulse.x * g.s1 + impulse.y);
-  b.v += p * frame.mB;
-  b.w += frame.iB * (impulse.x * g.s2 + impulse.y);
+  applySlider(joint, g, frame, a, b, 0.0f, impulse.x, impulse.y);
 
-  // The limits last, after the block (Box2D v3 solves them before it): a limit is one-sided and
-  // speculative, and a range shorter than a substep's travel has both rows acting in turn; solved
-  // before the block they kicked a light body A's spin through the lever arm, the block turned
-  // it back, and the warm start of the next substep replayed both (a 5 kg, 10 cm capsule on a
-  // 0.76 m wheel, +-5 cm of travel, struck at 80 m/s: 45 times the energy in three steps). After
-  // the block, the limit has the last word on the axial speed and the angle row is not undone.
+  // The limits last, after the block (Box2D v3 solves them before it), each with the block held
+  // (solveLimitHoldingBlock): the limit has the last word on the axial speed and the line and
+  // angle stay as the block left them.
   if (def.enableLimit && canSlide) {
-    solveTranslationLimit(joint.lowerImpulse, translation - def.lowerTranslation, 1.0f, g, frame, a, b, axialMass,
-                          context, useBias);
-    solveTranslationLimit(joint.upperImpulse, def.upperTranslation - translation, -1.0f, g, frame, a, b, axialMass,
-                          context, useBias);
+    solveLimitHoldingBlock(joint, joint.lowerImpulse, translation - def.lowerTranslation, 1.0f, g, frame, a, b, context,
+                           useBias);
+    solveLimitHoldingBlock(joint, joint.upperImpulse, def.upperTranslation - translation, -1.0f, g, frame, a, b,
+                           context, useBias);
+  }
+
+  if (!useBias) {
+    // The relax pass ends the substep: the accumulated impulses are what the next warm start
+    // applies, in this geometry (nothing moves before it). The angular impulse is rebased so that
+    // the body with less inertia gets again the moment it got over this substep. Kept as
+    // accumulated, it would not: the normal impulse's moment arm on A, cross(d + rA, normal),
+    // grows with the translation, so as B slides the stored normal and angular impulses no longer
+    // cancel on A, and a 5 mm, 7 kg disc carrying the line (inverse inertia 10^4) was warm started
+    // at 5 x 10^5 rad/s every substep, held by the runaway clamp, its angular momentum lost and
+    // the pair's energy growing tenfold.
+    const float axial = accumulatedAxial(joint);
+    const float angularForA = joint.torqueOnA - (axial * g.a1 + joint.impulse.x * g.s1);
+    const float angularForB = joint.torqueOnB - (axial * g.a2 + joint.impulse.x * g.s2);
+    const float inverseInertia = frame.iA + frame.iB;
+    if (inverseInertia > 0.0f) {
+      joint.impulse.y = (frame.iA * angularForA + frame.iB * angularForB) / inverseInertia;
+    }
   }
 
   storeVelocity(states, frame.indexA, staticIndex, a);

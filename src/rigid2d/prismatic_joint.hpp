@@ -14,6 +14,11 @@ struct PrismaticJoint {
   float motorImpulse = 0.0f;
   float lowerImpulse = 0.0f;
   float upperImpulse = 0.0f;
+  /// The moments (N m s) of everything the joint applied to A and to B about their centres in
+  /// the current substep, from its warm start on: what the relax pass rebases the angular
+  /// impulse on (solveJoint).
+  float torqueOnA = 0.0f;
+  float torqueOnB = 0.0f;
   // This step's constants.
   Vec2f axisA;            ///< the axis in world axes at the step's start
   float axialMass = 0.0f; ///< kg
