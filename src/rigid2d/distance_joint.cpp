@@ -166,7 +166,11 @@ void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyS
     float massScale = 1.0f;
     float impulseScale = 0.0f;
     if (useBias) {
-      bias = context.jointSoftness.biasRate * (g.length - target);
+      // The rod turns with the anchors' relative motion across it, and with the bodies.
+      const Vec2f relative = (b.v + cross(b.w, g.rB)) - (a.v + cross(a.w, g.rA));
+      const float orbit = std::abs(cross(g.axis, relative)) / g.length * context.h;
+      joint.positionShare = positionShare(std::max(orbit, substepTurn(a, b, context)));
+      bias = context.jointSoftness.biasRate * (1.0f - joint.positionShare) * (g.length - target);
       massScale = context.jointSoftness.massScale;
       impulseScale = context.jointSoftness.impulseScale;
     }
@@ -209,6 +213,29 @@ void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyS
 
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
+}
+
+void correctJointPosition(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                          std::uint32_t staticIndex, const StepContext& context) {
+  const DistanceJointDef& def = joint.def;
+  if (!isRigid(def) || joint.positionShare == 0.0f) {
+    return;
+  }
+  BodyState a = states[frame.indexA];
+  BodyState b = states[frame.indexB];
+  const AxisGeometry g = currentGeometry(frame, a, b);
+  const float mass = g.length > minAxisLength ? axialMassOf(frame, g.rA, g.rB, g.axis) : 0.0f;
+  if (mass == 0.0f) {
+    return;
+  }
+  const float target = def.enableLimit ? std::clamp(def.length, def.minLength, def.maxLength) : def.length;
+  const Vec2f p = g.axis * (-mass * joint.positionShare * context.positionCorrection * (g.length - target));
+  a.dp -= p * frame.mA;
+  turnBy(a, -frame.iA * cross(g.rA, p));
+  b.dp += p * frame.mB;
+  turnBy(b, frame.iB * cross(g.rB, p));
+  storePose(states, frame.indexA, staticIndex, a);
+  storePose(states, frame.indexB, staticIndex, b);
 }
 
 JointReaction jointReaction(const DistanceJoint& joint, const JointFrame&, float inverseH) {

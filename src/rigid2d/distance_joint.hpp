@@ -14,6 +14,7 @@ struct DistanceJoint {
   float lowerImpulse = 0.0f; ///< min-length limit (>= 0, pushes apart)
   float upperImpulse = 0.0f; ///< max-length limit (>= 0, pulls together)
   float motorImpulse = 0.0f;
+  float positionShare = 0.0f; ///< of the rod's error corrected on positions this substep (positionShare)
   // This step's constants.
   float axialMass = 0.0f; ///< kg: 1 / (the inverse mass along the axis) at the step's start (the solve recomputes it
                           ///< from the current anchors)
@@ -36,6 +37,8 @@ void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyS
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
 /// The force on body B over the last substep (the impulses along the axis times the substep
 /// rate); a distance joint applies no torque.
+void correctJointPosition(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                          std::uint32_t staticIndex, const StepContext& context);
 [[nodiscard]] JointReaction jointReaction(const DistanceJoint& joint, const JointFrame& frame, float inverseH);
 
 } // namespace impetus::rigid2d::detail

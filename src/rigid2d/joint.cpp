@@ -90,6 +90,21 @@ void solveJoints(WorldState& w, const StepContext& context, bool useBias) {
   }
 }
 
+namespace {
+template <class JointData>
+void correctJointPosition(JointData&, const JointFrame&, std::vector<BodyState>&, std::uint32_t, const StepContext&) {}
+} // namespace
+
+void correctJointPositions(WorldState& w, const StepContext& context) {
+  const std::uint32_t staticIndex = w.staticIndex();
+  for (Joint& joint : w.joints) {
+    if (joint.solved) {
+      std::visit([&](auto& data) { correctJointPosition(data, joint.frame, w.states, staticIndex, context); },
+                 joint.data);
+    }
+  }
+}
+
 void finishJoints(WorldState& w, const StepContext& context) {
   w.lastInverseH = context.inverseH;
   for (Joint& joint : w.joints) {

@@ -40,6 +40,8 @@ struct Joint {
 void prepareJoints(WorldState& w, const StepContext& context);
 void warmStartJoints(WorldState& w, const StepContext& context);
 void solveJoints(WorldState& w, const StepContext& context, bool useBias);
+/// Joint errors corrected on positions only (after the relax pass).
+void correctJointPositions(WorldState& w, const StepContext& context);
 /// Reaction readouts and break events, after the substeps.
 void finishJoints(WorldState& w, const StepContext& context);
 

@@ -13,7 +13,7 @@
 //
 // Three departures from Box2D v3, each found by the soak test (tests/soak) with a slider on a
 // body of little inertia (a 1 cm disc of several kg: inverse inertia 10^4): the block is rigid,
-// the limits hold it, and the relax pass rebases the angular impulse on the moments the bodies
+// the limits hold it, and the end of each substep rebases the angular impulse on the moments the bodies
 // got in the substep. Each is explained where it is done; docs/reliability.md, "Soak", fix 9.
 #include "rigid2d/prismatic_joint.hpp"
 
@@ -95,6 +95,27 @@ void applySlider(PrismaticJoint& joint, const SliderGeometry& g, const JointFram
 
 float accumulatedAxial(const PrismaticJoint& joint) {
   return joint.springImpulse + joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+}
+
+/// The line-and-angle block's position error: B's anchor's distance from A's line (m) and the
+/// relative angle's (rad).
+Vec2f blockError(const PrismaticJoint& joint, const JointFrame& f, const SliderGeometry& g, const BodyState& a,
+                 const BodyState& b) {
+  constexpr float twoPi = 6.28318530717959f;
+  const float angleError = std::remainder(f.deltaAngle + relativeAngle(b.dq, a.dq) - joint.def.referenceAngle, twoPi);
+  return {dot(g.normal, g.d), angleError};
+}
+
+/// The block's 2x2 effective mass matrix (inverse): [[mA + mB + iA s1^2 + iB s2^2, iA s1 + iB s2],
+/// [., iA + iB]].
+Mat22f blockMass(const SliderGeometry& g, const JointFrame& f) {
+  const float k11 = f.mA + f.mB + f.iA * g.s1 * g.s1 + f.iB * g.s2 * g.s2;
+  const float k12 = f.iA * g.s1 + f.iB * g.s2;
+  float k22 = f.iA + f.iB;
+  if (k22 == 0.0f) {
+    k22 = 1.0f; // neither body turns: the angular row is idle, keep K invertible
+  }
+  return {k11, k12, k12, k22};
 }
 
 /// One translation limit (as solveTranslationLimit) solved with the line-and-angle block held:
@@ -206,17 +227,10 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
   const Vec2f cdot{dot(g.normal, b.v - a.v) + g.s2 * b.w - g.s1 * a.w, b.w - a.w};
   Vec2f bias;
   if (useBias) {
-    constexpr float twoPi = 6.28318530717959f;
-    const float angleError = std::remainder(frame.deltaAngle + relativeAngle(b.dq, a.dq) - def.referenceAngle, twoPi);
-    bias = Vec2f{dot(g.normal, g.d), angleError} * context.jointSoftness.biasRate;
+    joint.positionShare = positionShare(substepTurn(a, b, context));
+    bias = blockError(joint, frame, g, a, b) * (context.jointSoftness.biasRate * (1.0f - joint.positionShare));
   }
-  const float k11 = frame.mA + frame.mB + frame.iA * g.s1 * g.s1 + frame.iB * g.s2 * g.s2;
-  const float k12 = frame.iA * g.s1 + frame.iB * g.s2;
-  float k22 = frame.iA + frame.iB;
-  if (k22 == 0.0f) {
-    k22 = 1.0f; // neither body turns: the angular row is idle, keep K invertible
-  }
-  const Vec2f impulse = -solve22(Mat22f{k11, k12, k12, k22}, cdot + bias);
+  const Vec2f impulse = -solve22(blockMass(g, frame), cdot + bias);
   joint.impulse += impulse;
   applySlider(joint, g, frame, a, b, 0.0f, impulse.x, impulse.y);
 
@@ -230,26 +244,44 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
                            context, useBias);
   }
 
-  if (!useBias) {
-    // The relax pass ends the substep: the accumulated impulses are what the next warm start
-    // applies, in this geometry (nothing moves before it). The angular impulse is rebased so that
-    // the body with less inertia gets again the moment it got over this substep. Kept as
-    // accumulated, it would not: the normal impulse's moment arm on A, cross(d + rA, normal),
-    // grows with the translation, so as B slides the stored normal and angular impulses no longer
-    // cancel on A, and a 5 mm, 7 kg disc carrying the line (inverse inertia 10^4) was warm started
-    // at 5 x 10^5 rad/s every substep, held by the runaway clamp, its angular momentum lost and
-    // the pair's energy growing tenfold.
-    const float axial = accumulatedAxial(joint);
-    const float angularForA = joint.torqueOnA - (axial * g.a1 + joint.impulse.x * g.s1);
-    const float angularForB = joint.torqueOnB - (axial * g.a2 + joint.impulse.x * g.s2);
-    const float inverseInertia = frame.iA + frame.iB;
-    if (inverseInertia > 0.0f) {
-      joint.impulse.y = (frame.iA * angularForA + frame.iB * angularForB) / inverseInertia;
-    }
-  }
-
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
+}
+
+void correctJointPosition(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                          std::uint32_t staticIndex, const StepContext& context) {
+  BodyState a = states[frame.indexA];
+  BodyState b = states[frame.indexB];
+  if (joint.positionShare > 0.0f) {
+    const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
+    const Vec2f impulse = solve22(blockMass(g, frame), blockError(joint, frame, g, a, b)) *
+                          -(joint.positionShare * context.positionCorrection);
+    const Vec2f p = g.normal * impulse.x;
+    a.dp -= p * frame.mA;
+    turnBy(a, -frame.iA * (impulse.x * g.s1 + impulse.y));
+    b.dp += p * frame.mB;
+    turnBy(b, frame.iB * (impulse.x * g.s2 + impulse.y));
+    storePose(states, frame.indexA, staticIndex, a);
+    storePose(states, frame.indexB, staticIndex, b);
+  }
+
+  // The substep is over: the accumulated impulses are what the next warm start applies, in this
+  // geometry (nothing moves before it). The angular impulse is rebased on the moments the bodies
+  // got over this substep. Kept as accumulated, it would not give them again: the normal
+  // impulse's moment arm on A, cross(d + rA, normal), grows with the translation, so as B slides
+  // the stored normal and angular impulses no longer cancel on A, and a 5 mm, 7 kg disc carrying
+  // the line (inverse inertia 10^4) was warm started at 5 x 10^5 rad/s every substep, held by the
+  // runaway clamp, its angular momentum lost and the pair's energy growing tenfold. Each body's
+  // moment wants its own angular impulse; weighted by the inverse inertias, the warm start gives
+  // the bodies the relative spin the substep gave them.
+  const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
+  const float axial = accumulatedAxial(joint);
+  const float angularForA = joint.torqueOnA - (axial * g.a1 + joint.impulse.x * g.s1);
+  const float angularForB = joint.torqueOnB - (axial * g.a2 + joint.impulse.x * g.s2);
+  const float inverseInertia = frame.iA + frame.iB;
+  if (inverseInertia > 0.0f) {
+    joint.impulse.y = (frame.iA * angularForA + frame.iB * angularForB) / inverseInertia;
+  }
 }
 
 JointReaction jointReaction(const PrismaticJoint& joint, const JointFrame&, float inverseH) {

@@ -15,10 +15,11 @@ struct PrismaticJoint {
   float lowerImpulse = 0.0f;
   float upperImpulse = 0.0f;
   /// The moments (N m s) of everything the joint applied to A and to B about their centres in
-  /// the current substep, from its warm start on: what the relax pass rebases the angular
+  /// the current substep, from its warm start on: what the end of the substep rebases the angular
   /// impulse on (solveJoint).
   float torqueOnA = 0.0f;
   float torqueOnB = 0.0f;
+  float positionShare = 0.0f; ///< of the block's error corrected on positions this substep (positionShare)
   // This step's constants.
   Vec2f axisA;            ///< the axis in world axes at the step's start
   float axialMass = 0.0f; ///< kg
@@ -70,6 +71,9 @@ void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<
                     std::uint32_t staticIndex);
 void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
+/// The block's error corrected on positions, after the relax pass (positionShare).
+void correctJointPosition(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                          std::uint32_t staticIndex, const StepContext& context);
 /// The force and torque on body B over the last substep (impulses times the substep rate).
 [[nodiscard]] JointReaction jointReaction(const PrismaticJoint& joint, const JointFrame& frame, float inverseH);
 

@@ -98,10 +98,25 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
   }
 
   // The point constraint, last: it matters most.
-  solvePointConstraint(joint.linearImpulse, frame, a, b, context.jointSoftness, useBias);
+  if (useBias) {
+    joint.positionShare = positionShare(substepTurn(a, b, context));
+  }
+  solvePointConstraint(joint.linearImpulse, frame, a, b, context.jointSoftness, useBias, 1.0f - joint.positionShare);
 
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
+}
+
+void correctJointPosition(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                          std::uint32_t staticIndex, const StepContext& context) {
+  if (joint.positionShare == 0.0f) {
+    return;
+  }
+  BodyState a = states[frame.indexA];
+  BodyState b = states[frame.indexB];
+  correctPointPosition(frame, a, b, joint.positionShare * context.positionCorrection);
+  storePose(states, frame.indexA, staticIndex, a);
+  storePose(states, frame.indexB, staticIndex, b);
 }
 
 JointReaction jointReaction(const RevoluteJoint& joint, const JointFrame&, float inverseH) {

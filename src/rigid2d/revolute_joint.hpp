@@ -15,6 +15,7 @@ struct RevoluteJoint {
   float lowerImpulse = 0.0f;
   float upperImpulse = 0.0f;
   float frictionImpulse = 0.0f;
+  float positionShare = 0.0f; ///< of the pin's error corrected on positions this substep (positionShare)
   // This step's constants.
   float axialMass = 0.0f;    ///< 1 / (iA + iB), kg m^2
   float angleAtStart = 0.0f; ///< the joint angle (angleB - angleA - referenceAngle) at the step's start, rad
@@ -27,6 +28,8 @@ void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<B
 void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).
+void correctJointPosition(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                          std::uint32_t staticIndex, const StepContext& context);
 [[nodiscard]] JointReaction jointReaction(const RevoluteJoint& joint, const JointFrame& frame, float inverseH);
 
 } // namespace impetus::rigid2d::detail

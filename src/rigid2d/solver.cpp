@@ -3,8 +3,10 @@
 // The awake bodies get compact solver indices; then, `substeps` times: integrate velocities
 // (gravity, applied forces, damping), warm start the contacts with their accumulated impulses,
 // solve them with bias (soft constraints that push overlap apart at a bounded speed), integrate
-// positions (as deltas), and relax (solve again without bias, taking back the velocity the bias
-// added). Restitution is applied once at the end, and the impulses are stored for the next step.
+// positions (as deltas), relax (solve again without bias, taking back the velocity the bias
+// added), and correct on the positions the share of a fast-turning joint's error its bias left
+// alone (positionShare, joint_solver.hpp). Restitution is applied once at the end, and the
+// impulses are stored for the next step.
 #include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
 
@@ -122,6 +124,8 @@ StepContext makeStepContext(const WorldState& w, float dt, int substeps) {
   // Joints are held at their own stiffness, capped like the contacts' by the substep rate.
   context.jointSoftness =
       makeSoft(std::min(w.def.jointHertz, 0.25f * context.inverseH), w.def.jointDampingRatio, context.h);
+  // A joint error corrected on positions goes at the rate the bias would take it back.
+  context.positionCorrection = std::min(1.0f, context.jointSoftness.biasRate * context.h);
   return context;
 }
 
@@ -139,6 +143,7 @@ void solve(WorldState& w, float dt) {
     integratePositions(w, context);
     solveJoints(w, context, false); // relax
     solveContacts(w, context, false);
+    correctJointPositions(w, context);
   }
   applyRestitution(w);
   clampVelocities(w, context); // what the relax and restitution passes added, too

@@ -43,9 +43,15 @@ void warmStartJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyS
 }
 
 void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
-                const StepContext&, bool useBias) {
+                const StepContext& context, bool useBias) {
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
+  if (useBias) {
+    joint.positionShare = positionShare(substepTurn(a, b, context));
+  }
+  // The share of a rigid part's bias left to the position correction (a spring keeps its own).
+  const float angularBiasScale = joint.def.angularHertz > 0.0f ? 1.0f : 1.0f - joint.positionShare;
+  const float linearBiasScale = joint.def.linearHertz > 0.0f ? 1.0f : 1.0f - joint.positionShare;
 
   // The angular row (skipped when neither body can turn: two fixed-rotation bodies).
   if (joint.axialMass > 0.0f) {
@@ -54,7 +60,7 @@ void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState
     float impulseScale = 0.0f;
     if (useBias || joint.def.angularHertz > 0.0f) {
       const float c = unwindAngle(joint.startAngle + relativeAngle(b.dq, a.dq));
-      bias = joint.angularSoftness.biasRate * c;
+      bias = joint.angularSoftness.biasRate * angularBiasScale * c;
       massScale = joint.angularSoftness.massScale;
       impulseScale = joint.angularSoftness.impulseScale;
     }
@@ -65,10 +71,32 @@ void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState
   }
 
   // The point constraint, last.
-  solvePointConstraint(joint.linearImpulse, frame, a, b, joint.linearSoftness, useBias || joint.def.linearHertz > 0.0f);
+  solvePointConstraint(joint.linearImpulse, frame, a, b, joint.linearSoftness, useBias || joint.def.linearHertz > 0.0f,
+                       linearBiasScale);
 
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
+}
+
+void correctJointPosition(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                          std::uint32_t staticIndex, const StepContext& context) {
+  if (joint.positionShare == 0.0f) {
+    return;
+  }
+  BodyState a = states[frame.indexA];
+  BodyState b = states[frame.indexB];
+  const float fraction = joint.positionShare * context.positionCorrection;
+  if (joint.def.angularHertz == 0.0f && joint.axialMass > 0.0f) {
+    const float c = unwindAngle(joint.startAngle + relativeAngle(b.dq, a.dq));
+    const float impulse = -joint.axialMass * fraction * c;
+    turnBy(a, -frame.iA * impulse);
+    turnBy(b, frame.iB * impulse);
+  }
+  if (joint.def.linearHertz == 0.0f) {
+    correctPointPosition(frame, a, b, fraction);
+  }
+  storePose(states, frame.indexA, staticIndex, a);
+  storePose(states, frame.indexB, staticIndex, b);
 }
 
 JointReaction jointReaction(const WeldJoint& joint, const JointFrame&, float inverseH) {

@@ -78,7 +78,8 @@ void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyStat
   float massScale = 1.0f;
   float impulseScale = 0.0f;
   if (useBias) {
-    bias = context.jointSoftness.biasRate * dot(g.normal, g.d);
+    joint.positionShare = positionShare(substepTurn(a, b, context));
+    bias = context.jointSoftness.biasRate * (1.0f - joint.positionShare) * dot(g.normal, g.d);
     massScale = context.jointSoftness.massScale;
     impulseScale = context.jointSoftness.impulseScale;
   }
@@ -93,6 +94,25 @@ void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyStat
 
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
+}
+
+void correctJointPosition(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                          std::uint32_t staticIndex, const StepContext& context) {
+  if (joint.positionShare == 0.0f) {
+    return;
+  }
+  BodyState a = states[frame.indexA];
+  BodyState b = states[frame.indexB];
+  const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
+  const float impulse =
+      -sliderNormalMassNow(g, frame) * joint.positionShare * context.positionCorrection * dot(g.normal, g.d);
+  const Vec2f p = g.normal * impulse;
+  a.dp -= p * frame.mA;
+  turnBy(a, -frame.iA * g.s1 * impulse);
+  b.dp += p * frame.mB;
+  turnBy(b, frame.iB * g.s2 * impulse);
+  storePose(states, frame.indexA, staticIndex, a);
+  storePose(states, frame.indexB, staticIndex, b);
 }
 
 JointReaction jointReaction(const WheelJoint& joint, const JointFrame&, float inverseH) {

@@ -15,6 +15,7 @@ struct WheelJoint {
   float motorImpulse = 0.0f;  ///< N m s per substep
   float lowerImpulse = 0.0f;
   float upperImpulse = 0.0f;
+  float positionShare = 0.0f; ///< of the line's error corrected on positions this substep (positionShare)
   // This step's constants.
   Vec2f axisA;            ///< the axis in world axes at the step's start
   float axialMass = 0.0f; ///< along the axis, kg: the mass the suspension spring carries
@@ -31,6 +32,9 @@ void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<Body
 void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).
+/// The line's error corrected on positions, after the relax pass (positionShare).
+void correctJointPosition(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                          std::uint32_t staticIndex, const StepContext& context);
 [[nodiscard]] JointReaction jointReaction(const WheelJoint& joint, const JointFrame& frame, float inverseH);
 
 } // namespace impetus::rigid2d::detail

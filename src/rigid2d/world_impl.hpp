@@ -286,9 +286,10 @@ struct StepContext {
   float h = 0.0f;        ///< substep, s
   float inverseH = 0.0f; ///< 1/s
   int substeps = 1;
-  Softness jointSoftness;       ///< the stiffness that holds joints together (jointHertz, jointDampingRatio)
-  float maxLinearSpeed = 0.0f;  ///< m/s (WorldDef::maxLinearSpeed)
-  float maxAngularSpeed = 0.0f; ///< rad/s: the largest turn per substep (a quarter turn) over h
+  Softness jointSoftness;          ///< the stiffness that holds joints together (jointHertz, jointDampingRatio)
+  float positionCorrection = 0.0f; ///< fraction of a joint's error corrected on positions a substep (0: by bias)
+  float maxLinearSpeed = 0.0f;     ///< m/s (WorldDef::maxLinearSpeed)
+  float maxAngularSpeed = 0.0f;    ///< rad/s: the largest turn per substep (a quarter turn) over h
 };
 
 /// Holds a dynamic body's velocity within the step's speed limits. Applied where velocities are

@@ -34,8 +34,11 @@ TEST(Determinism2D, the_reference_scene_hash_is_pinned) {
   // collidePolygons took apart cores' closest points from the best face and kept incident points
   // within a rounding of a side plane (the fuzzer's finding 5); 0x11d1696915ccc350 until a moving
   // shape's fat box held its bounds grown by the speculative distance (pairs begin a little
-  // sooner, so contacts are created, and solved, in another order).
-  constexpr std::uint64_t pinned = 0x952fb3c1b8c867d5ULL;
+  // sooner, so contacts are created, and solved, in another order); 0x952fb3c1b8c867d5 until
+  // joints turning fast within a substep had part of their error corrected on the positions
+  // instead of by bias velocity (positionShare in src/rigid2d/joint_solver.hpp: the soak's
+  // whirling chains).
+  constexpr std::uint64_t pinned = 0x97aeb3d20ef5601fULL;
   EXPECT_EQ(runMixedScene(nullptr), pinned) << std::hex << "now 0x" << runMixedScene(nullptr);
 }
 

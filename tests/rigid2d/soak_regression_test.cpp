@@ -309,7 +309,10 @@ struct SpinningRail {
 
 TEST(SoakRegression2D, a_bead_flung_along_a_free_rail_keeps_its_energy_and_angular_momentum) {
   // No limit: the joint's forces are workless and internal, so energy and angular momentum are
-  // conserved exactly; the bead flies out and the spin falls as 1 / (I + mu x^2).
+  // conserved exactly; the bead flies out and the spin falls as 1 / (I + mu x^2). Turning a
+  // quarter radian a substep, the joint's error is corrected on the positions (positionShare in
+  // src/rigid2d/joint_solver.hpp), which moves the bodies without their velocities: angular
+  // momentum within 0.5% (it drifts by r x v of the correction).
   SpinningRail rail(60.0f, 5.0f, false);
   const double e0 = rail.energy();
   const double l0 = rail.momentum();
@@ -317,7 +320,7 @@ TEST(SoakRegression2D, a_bead_flung_along_a_free_rail_keeps_its_energy_and_angul
     rail.world.step(dt);
   }
   EXPECT_GT(rail.world.prismaticTranslation(rail.slider), 50.0f); // flung out
-  EXPECT_NEAR(rail.momentum() / l0, 1.0, 1e-3);
+  EXPECT_NEAR(rail.momentum() / l0, 1.0, 5e-3);
   // Never more; at most 3% less: the soft step's position correction at a quarter radian a
   // substep takes a little in the first steps (1.8% here; at 150 rad/s, 7%).
   EXPECT_LE(rail.energy() / e0, 1.001);
@@ -339,11 +342,65 @@ TEST(SoakRegression2D, a_bead_stopped_by_the_limit_of_a_spinning_rail_does_not_p
     rail.world.step(dt);
     ASSERT_LE(rail.energy(), afterImpact * 1.001) << "step " << i;
   }
-  EXPECT_NEAR(rail.momentum() / l0, 1.0, 1e-3);
+  EXPECT_NEAR(rail.momentum() / l0, 1.0, 0.02); // the position correction's drift, as above
   // Turning together (the angle row holds) and held near the limit (soft: the centrifugal
   // load 6 kg x 22^2 x 1.4 m = 4 kN stretches it a few centimetres).
   EXPECT_NEAR(rail.world.angularVelocity(rail.disc), rail.world.angularVelocity(rail.bead), 0.01f);
   EXPECT_LT(rail.world.prismaticTranslation(rail.slider), 1.05f);
+}
+
+TEST(SoakRegression2D, a_rod_whirling_half_a_radian_a_substep_does_not_speed_up) {
+  // Two 2 cm discs of 20 kg on a 2 m rigid rod (a distance joint), whirling at 120 rad/s about
+  // their middle in zero gravity, each pinned (revolute joint) to a 1 cm pellet of 10 kg riding
+  // on it: the soak's seed 8, episode 9, reduced. At 0.5 rad a substep each body moves 0.5 m in
+  // a straight line while the rod turns, the rod drifts 25 cm long a substep, and when the bias
+  // pulled it back the relax pass left half of that push across the rod: the whirl sped up
+  // (before the position share: +4% of the energy a second, then the spin clamp). The joints'
+  // forces are workless: the energy may only fall.
+  World world{[] {
+    WorldDef def;
+    def.gravity = {0.0f, 0.0f};
+    return def;
+  }()};
+  const float spin = 120.0f;
+  ShapeDef heavy;
+  heavy.density = 20.0f / (3.14159265f * 0.02f * 0.02f);
+  ShapeDef pellet;
+  pellet.density = 10.0f / (3.14159265f * 0.01f * 0.01f);
+  std::array<BodyId, 2> ends;
+  std::array<BodyId, 2> riders;
+  for (int i = 0; i < 2; ++i) {
+    const float x = i == 0 ? -1.0f : 1.0f;
+    ends[i] = movingBody(world, {x, 0.0f}, 0.0f, {0.0f, spin * x}, spin);
+    world.createShape(ends[i], heavy, Circle{{}, 0.02f});
+    riders[i] = movingBody(world, {x, 0.03f}, 0.0f, {-spin * 0.03f, spin * x}, spin);
+    world.createShape(riders[i], pellet, Circle{{}, 0.01f});
+    RevoluteJointDef pin;
+    pin.bodyA = ends[i];
+    pin.bodyB = riders[i];
+    pin.localAnchorA = {0.0f, 0.03f};
+    pin.localAnchorB = {0.0f, 0.0f};
+    world.createJoint(pin);
+  }
+  DistanceJointDef rod;
+  rod.bodyA = ends[0];
+  rod.bodyB = ends[1];
+  rod.length = 2.0f;
+  world.createJoint(rod);
+  const auto energy = [&] { return mechanicalEnergy(world, {ends[0], ends[1], riders[0], riders[1]}, 0.0); };
+  const double e0 = energy();
+  for (int i = 0; i < 180; ++i) {
+    world.step(dt);
+    ASSERT_LE(energy(), e0 * 1.001) << "step " << i;
+  }
+  // It loses most of it instead (98% in three seconds: a whirl this fast is beyond what four
+  // substeps resolve, and the relax pass's projection takes (v h / r)^2 a substep), with the rod
+  // still 2 m long and the pins together.
+  EXPECT_NEAR(length(world.worldCenterOfMass(ends[1]) - world.worldCenterOfMass(ends[0])), 2.0f, 0.02f);
+  for (int i = 0; i < 2; ++i) {
+    const Vec2f pin = transformPoint(world.transform(ends[i]), Vec2f{0.0f, 0.03f});
+    EXPECT_LT(length(pin - world.worldCenterOfMass(riders[i])), 0.01f);
+  }
 }
 
 } // namespace
