@@ -277,7 +277,7 @@ inline std::uint64_t bits(Fields& f, const std::string& key, std::uint64_t fallb
 /// One word of a closed set.
 inline std::string choice(Fields& f, const std::string& key, const std::string& fallback,
                           std::initializer_list<const char*> allowed, const std::string& what) {
-  const std::string value = f.text(key, fallback);
+  std::string value = f.text(key, fallback);
   std::string list;
   for (const char* a : allowed) {
     if (value == a) {

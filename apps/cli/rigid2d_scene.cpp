@@ -42,7 +42,7 @@ constexpr std::size_t maxBodies = 1'000'000;
 namespace rigid2d_loader {
 
 std::string nameOf(Fields& f) {
-  const std::string name = f.text("name", "");
+  std::string name = f.text("name", "");
   for (const char c : name) {
     if (c == ',' || c == '"' || std::iscntrl(static_cast<unsigned char>(c)) != 0) {
       fail(f.path("name"), "'" + name + "' must not contain commas, quotes or control characters");
@@ -293,9 +293,9 @@ std::string sceneKind(const json& doc) {
     return "particles";
   }
   if (!it->is_string()) {
-    fail("kind", "expected \"particles\" or \"rigid2d\", got " + it->dump());
+    fail("kind", R"(expected "particles" or "rigid2d", got )" + it->dump());
   }
-  const std::string kind = it->get<std::string>();
+  std::string kind = it->get<std::string>();
   if (kind != "particles" && kind != "rigid2d") {
     fail("kind", "unknown scene kind '" + kind + "' (particles, rigid2d)");
   }

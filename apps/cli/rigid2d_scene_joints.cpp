@@ -38,13 +38,13 @@ BodyId Loader::bodyNamed(Fields& f, const std::string& key) {
   return scene_.bodies[it->second];
 }
 
-Vec2f Loader::anchor(Fields& f, BodyId id, const char* end, bool shared) {
+Vec2f Loader::anchor(Fields& f, BodyId id, const char* end, bool shared) const {
   const std::string localKey = std::string("local_anchor_") + end;
   const std::string worldKey = std::string("anchor_") + end;
   const bool hasLocal = f.has(localKey);
   const bool hasWorld = f.has(worldKey);
   const bool hasShared = shared && f.has("anchor");
-  if (int{hasLocal} + int{hasWorld} + int{hasShared} > 1) {
+  if (static_cast<int>(hasLocal) + static_cast<int>(hasWorld) + static_cast<int>(hasShared) > 1) {
     fail(f.path(hasLocal ? localKey : worldKey),
          std::string("give at most one of anchor, ") + worldKey + " (world) and " + localKey + " (body frame)");
   }
@@ -61,7 +61,7 @@ Vec2f Loader::anchor(Fields& f, BodyId id, const char* end, bool shared) {
   return {};
 }
 
-Vec2f Loader::axis(Fields& f, BodyId a, const Vec2f& fallbackWorld) {
+Vec2f Loader::axis(Fields& f, BodyId a, const Vec2f& fallbackWorld) const {
   if (f.has("local_axis_a") && f.has("axis")) {
     fail(f.path("axis"), "give at most one of axis (world) and local_axis_a (body A's frame)");
   }

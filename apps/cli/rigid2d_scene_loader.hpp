@@ -61,9 +61,9 @@ private:
   float initialAngle(rigid2d::BodyId id) const { return angles_[scene_.bodyNumber(id)]; }
   /// One end's anchor in its body's frame: "local_anchor_<e>" (body frame), "anchor_<e>"
   /// (a world point) or the shared "anchor" (a world point); at most one; default the origin.
-  Vec2f anchor(json_fields::Fields& f, rigid2d::BodyId id, const char* end, bool shared);
+  Vec2f anchor(json_fields::Fields& f, rigid2d::BodyId id, const char* end, bool shared) const;
   /// An axis in body A's frame: "local_axis_a" or "axis" (a world direction).
-  Vec2f axis(json_fields::Fields& f, rigid2d::BodyId a, const Vec2f& fallbackWorld);
+  Vec2f axis(json_fields::Fields& f, rigid2d::BodyId a, const Vec2f& fallbackWorld) const;
   /// What every joint has. B's anchor, A's anchor, collide_connected, break limits.
   void base(json_fields::Fields& f, rigid2d::JointDefBase& d, bool anchors);
   void bodies(json_fields::Fields& f, rigid2d::JointDefBase& d);

@@ -1,6 +1,7 @@
 // Internal state of the 2D world, shared by world.cpp (bookkeeping, broadphase, collide,
-// finalize), solver.cpp (the soft step), contact_solver.cpp (the contact constraints),
-// island.cpp (sleeping), continuous.cpp and world_queries.cpp.
+// finalize), world_bodies.cpp (bodies and shapes), world_joints.cpp, solver.cpp (the soft step),
+// contact_solver.cpp (the contact constraints), joint.cpp and the joints' files, island.cpp
+// (sleeping), continuous.cpp, world_queries.cpp and snapshot.cpp.
 #pragma once
 
 #include <impetus/core/id_pool.hpp>

@@ -296,7 +296,8 @@ std::unique_ptr<Episode> buildEpisode(std::uint64_t seed, int index, TaskRunner*
   const int count = 20 + rng.below(80);
   for (int i = 0; i < count; ++i) {
     const float x = -54.0f + 12.0f * static_cast<float>(i % 10) + rng.uniform(-0.5f, 0.5f);
-    const float y = -54.0f + 12.0f * static_cast<float>(i / 10) + rng.uniform(-0.5f, 0.5f);
+    const int row = i / 10;
+    const float y = -54.0f + 12.0f * static_cast<float>(row) + rng.uniform(-0.5f, 0.5f);
     addBody(*e, rng, {x, y}, e->closed);
   }
   // Joints join a body to its right-hand neighbour in the grid, moved up against it (bounding
@@ -469,7 +470,9 @@ int main(int argc, char** argv) {
       return usage("unknown option " + arg);
     }
     if (end == value.c_str() || *end != '\0') {
-      return usage(arg + " = " + value + ": not a number");
+      std::string why = arg;
+      why += " = " + value + ": not a number";
+      return usage(why);
     }
   }
   if (!(wallSeconds > 0.0) || !(episodeSeconds > 0.0) || threads < 1 || threads > 64 || firstEpisode < 0 ||
