@@ -16,7 +16,7 @@ struct PrismaticJoint {
   float upperImpulse = 0.0f;
   /// The moments (N m s) of everything the joint applied to A and to B about their centres in
   /// the current substep, from its warm start on: what the end of the substep rebases the angular
-  /// impulse on (solveJoint).
+  /// impulse on (correctJointPosition, which ends every substep).
   float torqueOnA = 0.0f;
   float torqueOnB = 0.0f;
   float positionShare = 0.0f; ///< of the block's error corrected on positions this substep (positionShare)
