@@ -230,10 +230,7 @@ void correctJointPosition(DistanceJoint& joint, const JointFrame& frame, std::ve
   }
   const float target = def.enableLimit ? std::clamp(def.length, def.minLength, def.maxLength) : def.length;
   const Vec2f p = g.axis * (-mass * joint.positionShare * context.positionCorrection * (g.length - target));
-  a.dp -= p * frame.mA;
-  turnBy(a, -frame.iA * cross(g.rA, p));
-  b.dp += p * frame.mB;
-  turnBy(b, frame.iB * cross(g.rB, p));
+  applyPositionCorrection(frame, a, b, p, cross(g.rA, p), cross(g.rB, p));
   storePose(states, frame.indexA, staticIndex, a);
   storePose(states, frame.indexB, staticIndex, b);
 }

@@ -31,6 +31,13 @@ struct DistanceJoint {
 };
 
 void prepareJoint(DistanceJoint& joint, const JointFrame& frame, const StepContext& context);
+/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
+inline void scaleImpulses(DistanceJoint& joint, float scale) {
+  joint.impulse = joint.impulse * scale;
+  joint.lowerImpulse = joint.lowerImpulse * scale;
+  joint.upperImpulse = joint.upperImpulse * scale;
+  joint.motorImpulse = joint.motorImpulse * scale;
+}
 void warmStartJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

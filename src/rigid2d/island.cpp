@@ -6,18 +6,6 @@
 #include <limits>
 
 namespace impetus::rigid2d::detail {
-namespace {
-
-std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]]; // path halving
-    i = parent[i];
-  }
-  return i;
-}
-
-} // namespace
-
 /// A sleeping body touched by a moving one, or joined to one, wakes up (before the solve, so it
 /// takes part).
 void wakeTouched(WorldState& w, bool sleeperTouched) {

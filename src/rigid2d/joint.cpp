@@ -4,6 +4,7 @@
 #include "rigid2d/joints.hpp"
 
 #include <cmath>
+#include <tuple>
 
 namespace impetus::rigid2d::detail {
 
@@ -40,6 +41,7 @@ void prepareJoints(WorldState& w, const StepContext& context) {
     std::visit([&](auto& data) { prepareJoint(data, f, context); }, joint.data);
     joint.solved = true;
   }
+  buildJointGroups(w);
 }
 
 namespace {
@@ -69,13 +71,137 @@ void clampJointBodies(WorldState& w, const JointFrame& f, const StepContext& con
 
 } // namespace
 
+/// The jointed groups of this step (JointGroups), after the joints are prepared.
+void buildJointGroups(WorldState& w) {
+  JointGroups& g = w.jointGroups;
+  g.members.clear();
+  if (w.joints.empty()) {
+    return;
+  }
+  const std::uint32_t n = w.staticIndex();
+  g.parent.resize(n);
+  g.isMember.assign(n, 0);
+  g.memberMass.clear();
+  g.memberInertia.clear();
+  // At most two members a joint: reserved once, no allocation while the joints stay.
+  g.members.reserve(2 * w.joints.size());
+  g.memberMass.reserve(2 * w.joints.size());
+  g.memberInertia.reserve(2 * w.joints.size());
+  for (std::uint32_t i = 0; i < n; ++i) {
+    g.parent[i] = i;
+  }
+  const auto dynamicIndex = [&](std::uint32_t index, float inverseMass) { return index < n && inverseMass > 0.0f; };
+  for (const Joint& joint : w.joints) {
+    if (!joint.solved) {
+      continue;
+    }
+    const JointFrame& f = joint.frame;
+    const bool a = dynamicIndex(f.indexA, f.mA);
+    const bool b = dynamicIndex(f.indexB, f.mB);
+    for (const auto& [index, inverseMass, inverseInertia, dynamic] :
+         {std::tuple{f.indexA, f.mA, f.iA, a}, std::tuple{f.indexB, f.mB, f.iB, b}}) {
+      if (dynamic && g.isMember[index] == 0) {
+        g.isMember[index] = 1;
+        g.members.push_back(index);
+        g.memberMass.push_back(1.0f / inverseMass);
+        g.memberInertia.push_back(inverseInertia > 0.0f ? 1.0f / inverseInertia : 0.0f);
+      }
+    }
+    if (a && b) {
+      g.parent[findRoot(g.parent, f.indexA)] = findRoot(g.parent, f.indexB);
+    }
+  }
+  g.memberGroup.resize(g.members.size());
+  for (std::size_t k = 0; k < g.members.size(); ++k) {
+    g.memberGroup[k] = findRoot(g.parent, g.members[k]);
+  }
+  g.before.resize(g.members.size());
+  g.slope.resize(n);
+  g.curvature.resize(n);
+  g.share.resize(n);
+}
+
+namespace {
+
+/// The share (0 to 1) of a jointed group's warm start to keep: the whole of it unless it adds
+/// kinetic energy to the group's bodies, else as much as adds none. Along the warm start's
+/// direction the energy is E(s) = E0 + s slope + s^2 curvature / 2; E(s) <= E0 up to
+/// s = -2 slope / curvature.
+///
+/// The warm start re-applies the last substep's impulses as a guess of this one's. Where the
+/// joints carry a load (a weight, a motor's drive) the forces since have undone last substep's
+/// impulses along them (J v = -K lambda), and the guess takes that energy out again: it is kept
+/// whole. Where they were an impact that stopped the bodies once, J v = 0 now, and applying them
+/// again throws the bodies back apart (adding lambda K lambda / 2) for the solve to take back.
+/// A lone joint's solve does that exactly; in a chain, one Gauss-Seidel pass does not, and the
+/// rest is energy from nowhere: the soak found a 7 mm, 5 kg disc thrown at 189 m/s along a
+/// slider on a 3.6 kg disc pinned to a 107 kg block gaining 500 kJ (68% of its episode's energy
+/// scale) in its first step, the warm start re-throwing it each substep; and chains of sliders
+/// between 1 cm discs whose accumulated impulses drifted apart, cancelling on the shared disc,
+/// until one warm start spun it past 10^5 rad/s (docs/reliability.md, "Soak", fixes 11, 13, 15).
+/// A centripetal pull is trimmed too: the relax pass has already turned the velocities along the
+/// joint at the substep's end, so J v = 0 when the warm start comes; the bias (or, turning fast,
+/// the position correction) holds such a joint, as it holds a lone one whatever the warm start.
+/// The test is over a group, not each joint: a hanging chain's links all fall together under
+/// gravity, so no one joint's guess takes energy out alone (each link's J v is zero), only all
+/// of them together.
+float keptShare(double slope, double curvature) {
+  if (!(curvature > 0.0) || -2.0 * slope >= curvature) {
+    return 1.0f; // nothing applied, or the whole of it adds no energy
+  }
+  return slope >= 0.0 ? 0.0f : static_cast<float>(-2.0 * slope / curvature);
+}
+
+} // namespace
+
 void warmStartJoints(WorldState& w, const StepContext& context) {
   const std::uint32_t staticIndex = w.staticIndex();
+  JointGroups& g = w.jointGroups;
+  for (std::size_t k = 0; k < g.members.size(); ++k) {
+    g.before[k] = w.states[g.members[k]];
+    g.slope[g.memberGroup[k]] = 0.0;
+    g.curvature[g.memberGroup[k]] = 0.0;
+  }
   for (Joint& joint : w.joints) {
     if (joint.solved) {
       std::visit([&](auto& data) { warmStartJoint(data, joint.frame, w.states, staticIndex); }, joint.data);
-      clampJointBodies(w, joint.frame, context);
     }
+  }
+  for (std::size_t k = 0; k < g.members.size(); ++k) {
+    const BodyState& s0 = g.before[k];
+    const BodyState& s1 = w.states[g.members[k]];
+    const double dvx = static_cast<double>(s1.v.x) - s0.v.x;
+    const double dvy = static_cast<double>(s1.v.y) - s0.v.y;
+    const double dw = static_cast<double>(s1.w) - s0.w;
+    const double m = g.memberMass[k];
+    const double inertia = g.memberInertia[k];
+    const std::uint32_t group = g.memberGroup[k];
+    g.slope[group] += m * (s0.v.x * dvx + s0.v.y * dvy) + inertia * s0.w * dw;
+    g.curvature[group] += m * (dvx * dvx + dvy * dvy) + inertia * dw * dw;
+  }
+  for (std::size_t k = 0; k < g.members.size(); ++k) {
+    const std::uint32_t group = g.memberGroup[k];
+    const float share = g.share[group] = keptShare(g.slope[group], g.curvature[group]);
+    if (share < 1.0f) {
+      const BodyState& s0 = g.before[k];
+      BodyState& s = w.states[g.members[k]];
+      s.v = s0.v + (s.v - s0.v) * share;
+      s.w = s0.w + (s.w - s0.w) * share;
+    }
+  }
+  for (Joint& joint : w.joints) {
+    if (!joint.solved) {
+      continue;
+    }
+    const JointFrame& f = joint.frame;
+    const std::uint32_t member = f.indexA < staticIndex && g.isMember[f.indexA] != 0 ? f.indexA : f.indexB;
+    if (member < staticIndex && g.isMember[member] != 0) {
+      const float share = g.share[findRoot(g.parent, member)];
+      if (share < 1.0f) {
+        std::visit([&](auto& data) { scaleImpulses(data, share); }, joint.data);
+      }
+    }
+    clampJointBodies(w, f, context);
   }
 }
 

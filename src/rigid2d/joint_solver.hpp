@@ -185,17 +185,38 @@ inline void solvePointConstraint(Vec2f& linear, const JointFrame& f, BodyState& 
   b.w += f.iB * cross(rB, impulse);
 }
 
-/// Moves the anchors of a point constraint `fraction` of the way together, on the positions only
-/// (velocities untouched: no energy is added).
+/// The most a position correction may turn a body, rad (Box2D 2.4's maxAngularCorrection, 8
+/// degrees). The correction is solved on the joint's linearization at the current pose: turning
+/// a body by theta moves its anchor by theta x r. A pin pulled 0.3 m apart on a 1 cm, 0.6 kg disc
+/// whose anchor is 5 cm from its centre (inverse inertia 3000: turning is the cheap way to move
+/// the anchor) asks for a 6 rad turn, which moves the anchor nowhere near where the
+/// linearization said, and flips the disc's other joints round: the next warm start then applies
+/// their stored impulses in a geometry they were not found in. The soak found such a chain (a
+/// plank, the disc, a rod to a body thrown at 115 m/s) gaining 60% of its energy in three steps.
+/// Capped, the correction goes in steps the linearization holds for, and the next substeps finish it.
+constexpr float maxCorrectionTurn = 0.1396f;
+
+/// Applies a position correction: linear impulse `p` (kg m: moves B by p/mB, A by -p/mA) and the
+/// moments `momentA`, `momentB` it and any angular part exert on each body (kg m^2: turns B by
+/// iB momentB, A by -iA momentA), scaled down as a whole so neither body turns more than
+/// maxCorrectionTurn. Positions only: velocities are untouched, so no energy is added.
+inline void applyPositionCorrection(const JointFrame& f, BodyState& a, BodyState& b, const Vec2f& p, float momentA,
+                                    float momentB) {
+  const float turn = std::max(std::abs(f.iA * momentA), std::abs(f.iB * momentB));
+  const float scale = turn > maxCorrectionTurn ? maxCorrectionTurn / turn : 1.0f;
+  a.dp -= p * (f.mA * scale);
+  turnBy(a, -f.iA * momentA * scale);
+  b.dp += p * (f.mB * scale);
+  turnBy(b, f.iB * momentB * scale);
+}
+
+/// Moves the anchors of a point constraint `fraction` of the way together, on the positions only.
 inline void correctPointPosition(const JointFrame& f, BodyState& a, BodyState& b, float fraction) {
   const Vec2f rA = currentAnchor(a, f.frameA);
   const Vec2f rB = currentAnchor(b, f.frameB);
   const Vec2f separation = (b.dp - a.dp) + (rB - rA) + f.deltaCenter;
   const Vec2f p = solve22(pointMass(f, rA, rB), separation) * -fraction;
-  a.dp -= p * f.mA;
-  turnBy(a, -f.iA * cross(rA, p));
-  b.dp += p * f.mB;
-  turnBy(b, f.iB * cross(rB, p));
+  applyPositionCorrection(f, a, b, p, cross(rA, p), cross(rB, p));
 }
 
 } // namespace impetus::rigid2d::detail

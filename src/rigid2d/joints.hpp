@@ -38,6 +38,9 @@ struct Joint {
 
 // joint.cpp: the joints' part of the step, in joint slot order.
 void prepareJoints(WorldState& w, const StepContext& context);
+/// The jointed groups (JointGroups) of the joints prepared this step; called by prepareJoints.
+void buildJointGroups(WorldState& w);
+/// Every joint's warm start, each jointed group's trimmed so as to add it no kinetic energy.
 void warmStartJoints(WorldState& w, const StepContext& context);
 void solveJoints(WorldState& w, const StepContext& context, bool useBias);
 /// Joint errors corrected on positions only (after the relax pass).

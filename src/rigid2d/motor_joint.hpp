@@ -23,6 +23,11 @@ struct MotorJoint {
 };
 
 void prepareJoint(MotorJoint& joint, const JointFrame& frame, const StepContext& context);
+/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
+inline void scaleImpulses(MotorJoint& joint, float scale) {
+  joint.linearImpulse = joint.linearImpulse * scale;
+  joint.angularImpulse = joint.angularImpulse * scale;
+}
 void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,

@@ -24,6 +24,11 @@ struct MouseJoint {
 };
 
 void prepareJoint(MouseJoint& joint, const JointFrame& frame, const StepContext& context);
+/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
+inline void scaleImpulses(MouseJoint& joint, float scale) {
+  joint.linearImpulse = joint.linearImpulse * scale;
+  joint.angularImpulse = joint.angularImpulse * scale;
+}
 void warmStartJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,

@@ -11,11 +11,11 @@
 // and the two one-sided limits, each solved with the block held. Since A's line turns with A,
 // the moment arms on A are taken about B's anchor (d + rA), not A's.
 //
-// Four departures from Box2D v3, each found by the soak test (tests/soak) with sliders on bodies
+// Three departures from Box2D v3, each found by the soak test (tests/soak) with sliders on bodies
 // of little inertia (1 cm discs of several kg: inverse inertias 10^3 to 10^4): the block is
-// rigid, the limits hold it, the end of each substep rebases the angular impulse on the moments
-// the bodies got in it, and the warm start uses 0.8 of the accumulated impulses. Each is
-// explained where it is done; docs/reliability.md, "Soak", fixes 9 and 11.
+// rigid, the limits hold it, and the end of each substep rebases the angular impulse on the
+// moments the bodies got in it. Each is explained where it is done; docs/reliability.md, "Soak",
+// fix 9. (Chains of such sliders also need the warm start trimmed: warmStartJoints, joint.cpp.)
 #include "rigid2d/prismatic_joint.hpp"
 
 #include <algorithm>
@@ -186,22 +186,6 @@ void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
-  // A fifth of the accumulated impulses is let go each substep (Bullet's warmstartingFactor, 0.85,
-  // does the same for every constraint). Sliders in a chain between bodies of tiny inertia (three
-  // 1-2 cm discs of 13-26 kg on +-1 m rails) do not converge in a Gauss-Seidel pass: the middle
-  // disc is shared by two line-and-angle blocks, and their accumulated impulses drift apart in
-  // opposite directions, their sum on the disc unchanged, until the warm start spins a disc past
-  // 10^5 rad/s before the other joint's takes it back (the soak's sliders: seven seeds of nine
-  // gained 1-19% of their energy scale). Let go, that drift decays as 0.8^n instead of growing;
-  // a lone slider's solve is exact for its rows (the block, and each limit with the block held)
-  // and needs no warm start; a loaded one loses a fifth of its head start (the joint tests hold,
-  // unchanged). At 0.9 two seeds of four still failed; without any warm start all nine passed.
-  constexpr float warmStartFactor = 0.8f;
-  joint.impulse = joint.impulse * warmStartFactor;
-  joint.springImpulse *= warmStartFactor;
-  joint.motorImpulse *= warmStartFactor;
-  joint.lowerImpulse *= warmStartFactor;
-  joint.upperImpulse *= warmStartFactor;
   joint.torqueOnA = 0.0f;
   joint.torqueOnB = 0.0f;
   applySlider(joint, g, frame, a, b, accumulatedAxial(joint), joint.impulse.x, joint.impulse.y);
@@ -273,11 +257,8 @@ void correctJointPosition(PrismaticJoint& joint, const JointFrame& frame, std::v
     const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
     const Vec2f impulse = solve22(blockMass(g, frame), blockError(joint, frame, g, a, b)) *
                           -(joint.positionShare * context.positionCorrection);
-    const Vec2f p = g.normal * impulse.x;
-    a.dp -= p * frame.mA;
-    turnBy(a, -frame.iA * (impulse.x * g.s1 + impulse.y));
-    b.dp += p * frame.mB;
-    turnBy(b, frame.iB * (impulse.x * g.s2 + impulse.y));
+    applyPositionCorrection(frame, a, b, g.normal * impulse.x, impulse.x * g.s1 + impulse.y,
+                            impulse.x * g.s2 + impulse.y);
     storePose(states, frame.indexA, staticIndex, a);
     storePose(states, frame.indexB, staticIndex, b);
   }

@@ -67,6 +67,16 @@ void solveTranslationLimit(float& accumulated, float c, float direction, const S
                            BodyState& a, BodyState& b, float axialMass, const StepContext& context, bool useBias);
 
 void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const StepContext& context);
+/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
+inline void scaleImpulses(PrismaticJoint& joint, float scale) {
+  joint.impulse = joint.impulse * scale;
+  joint.springImpulse = joint.springImpulse * scale;
+  joint.motorImpulse = joint.motorImpulse * scale;
+  joint.lowerImpulse = joint.lowerImpulse * scale;
+  joint.upperImpulse = joint.upperImpulse * scale;
+  joint.torqueOnA = joint.torqueOnA * scale;
+  joint.torqueOnB = joint.torqueOnB * scale;
+}
 void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

@@ -23,6 +23,15 @@ struct RevoluteJoint {
 };
 
 void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepContext& context);
+/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
+inline void scaleImpulses(RevoluteJoint& joint, float scale) {
+  joint.linearImpulse = joint.linearImpulse * scale;
+  joint.springImpulse = joint.springImpulse * scale;
+  joint.motorImpulse = joint.motorImpulse * scale;
+  joint.lowerImpulse = joint.lowerImpulse * scale;
+  joint.upperImpulse = joint.upperImpulse * scale;
+  joint.frictionImpulse = joint.frictionImpulse * scale;
+}
 void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

@@ -89,8 +89,7 @@ void correctJointPosition(WeldJoint& joint, const JointFrame& frame, std::vector
   if (joint.def.angularHertz == 0.0f && joint.axialMass > 0.0f) {
     const float c = unwindAngle(joint.startAngle + relativeAngle(b.dq, a.dq));
     const float impulse = -joint.axialMass * fraction * c;
-    turnBy(a, -frame.iA * impulse);
-    turnBy(b, frame.iB * impulse);
+    applyPositionCorrection(frame, a, b, {}, impulse, impulse);
   }
   if (joint.def.linearHertz == 0.0f) {
     correctPointPosition(frame, a, b, fraction);

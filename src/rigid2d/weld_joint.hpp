@@ -20,6 +20,11 @@ struct WeldJoint {
 };
 
 void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& context);
+/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
+inline void scaleImpulses(WeldJoint& joint, float scale) {
+  joint.linearImpulse = joint.linearImpulse * scale;
+  joint.angularImpulse = joint.angularImpulse * scale;
+}
 void warmStartJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,

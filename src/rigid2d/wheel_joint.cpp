@@ -29,16 +29,6 @@ void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<Body
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
-  // 0.8 of the accumulated impulses, as the prismatic joint's warm start (warmStartFactor there):
-  // a body of tiny inertia carrying the line, its partner metres out along it, is the same badly
-  // conditioned pair (a 4 cm, 37 kg disc and an 8 m body 12 m out: the full warm start flung
-  // both to the 400 m/s clamp, the jointed one-hour soak's episode 26,183).
-  constexpr float warmStartFactor = 0.8f;
-  joint.perpImpulse *= warmStartFactor;
-  joint.springImpulse *= warmStartFactor;
-  joint.lowerImpulse *= warmStartFactor;
-  joint.upperImpulse *= warmStartFactor;
-  joint.motorImpulse *= warmStartFactor;
   const float axial = joint.springImpulse + joint.lowerImpulse - joint.upperImpulse;
   const Vec2f p = g.axis * axial + g.normal * joint.perpImpulse;
   a.v -= p * frame.mA;
@@ -116,11 +106,7 @@ void correctJointPosition(WheelJoint& joint, const JointFrame& frame, std::vecto
   const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
   const float impulse =
       -sliderNormalMassNow(g, frame) * joint.positionShare * context.positionCorrection * dot(g.normal, g.d);
-  const Vec2f p = g.normal * impulse;
-  a.dp -= p * frame.mA;
-  turnBy(a, -frame.iA * g.s1 * impulse);
-  b.dp += p * frame.mB;
-  turnBy(b, frame.iB * g.s2 * impulse);
+  applyPositionCorrection(frame, a, b, g.normal * impulse, g.s1 * impulse, g.s2 * impulse);
   storePose(states, frame.indexA, staticIndex, a);
   storePose(states, frame.indexB, staticIndex, b);
 }

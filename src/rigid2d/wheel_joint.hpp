@@ -27,6 +27,14 @@ struct WheelJoint {
 };
 
 void prepareJoint(WheelJoint& joint, const JointFrame& frame, const StepContext& context);
+/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
+inline void scaleImpulses(WheelJoint& joint, float scale) {
+  joint.perpImpulse = joint.perpImpulse * scale;
+  joint.springImpulse = joint.springImpulse * scale;
+  joint.motorImpulse = joint.motorImpulse * scale;
+  joint.lowerImpulse = joint.lowerImpulse * scale;
+  joint.upperImpulse = joint.upperImpulse * scale;
+}
 void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,

@@ -170,6 +170,31 @@ struct SolverBodyInfo {
   Vec2f centerOffset;            ///< centre of mass minus origin, world axes, m
 };
 
+/// The union-find root of element i (path halving): the islands' sleep pass and the joints'
+/// warm start.
+inline std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+/// The jointed groups of a step: dynamic bodies joined through joints (not through static or
+/// kinematic bodies, which nothing moves), for the joints' warm start (joint.cpp). Scratch,
+/// rebuilt each step.
+struct JointGroups {
+  std::vector<std::uint32_t> parent;      ///< union-find by solver index
+  std::vector<std::uint8_t> isMember;     ///< by solver index
+  std::vector<std::uint32_t> members;     ///< solver indices of the dynamic bodies in joints
+  std::vector<std::uint32_t> memberGroup; ///< each member's group: its root's solver index
+  std::vector<float> memberMass;          ///< kg
+  std::vector<float> memberInertia;       ///< kg m^2 (0: fixed rotation)
+  std::vector<BodyState> before;          ///< the members' velocities before the warm start
+  std::vector<double> slope, curvature;   ///< by group: the warm start's line search (J, J)
+  std::vector<float> share;               ///< by group: the share of the warm start kept
+};
+
 struct ContactSolverData; // contact_solver.cpp
 struct Joint;             // joints.hpp
 
@@ -236,6 +261,7 @@ struct WorldState {
   std::unique_ptr<ContactSolverData> contactSolver;
   std::vector<BulletStart> bullets;        ///< scratch of the finalize pass
   std::vector<std::uint32_t> islandParent; ///< scratch of the sleep pass (union-find by body slot)
+  JointGroups jointGroups;                 ///< scratch of the joints' warm start
   std::vector<float> islandRest;           ///< scratch of the sleep pass (least rest time per island)
 
   ContactEvents contactEvents;

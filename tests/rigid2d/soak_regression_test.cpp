@@ -395,8 +395,10 @@ TEST(SoakRegression2D, a_rod_whirling_half_a_radian_a_substep_does_not_speed_up)
   }
   // It loses most of it instead (98% in three seconds: a whirl this fast is beyond what four
   // substeps resolve, and the relax pass's projection takes (v h / r)^2 a substep), with the rod
-  // still 2 m long and the pins together.
-  EXPECT_NEAR(length(world.worldCenterOfMass(ends[1]) - world.worldCenterOfMass(ends[0])), 2.0f, 0.02f);
+  // still 2 m long within 1.5% (it drifts 25 cm long a substep and is mended on the positions
+  // each substep; what one Gauss-Seidel pass over the three joints leaves is about 2 cm) and the
+  // pins together.
+  EXPECT_NEAR(length(world.worldCenterOfMass(ends[1]) - world.worldCenterOfMass(ends[0])), 2.0f, 0.03f);
   for (int i = 0; i < 2; ++i) {
     const Vec2f pin = transformPoint(world.transform(ends[i]), Vec2f{0.0f, 0.03f});
     EXPECT_LT(length(pin - world.worldCenterOfMass(riders[i])), 0.01f);
@@ -452,6 +454,108 @@ TEST(SoakRegression2D, a_chain_of_sliders_between_tiny_heavy_discs_does_not_gain
   for (int i = 0; i < 180; ++i) {
     world.step(dt);
     ASSERT_LE(energy(), e0 * 1.001) << "step " << i;
+  }
+}
+
+TEST(SoakRegression2D, a_pin_on_a_tiny_disc_pulled_apart_is_mended_without_gaining_energy) {
+  // The soak's seed 22, episode 6,899 (and seed 21, episode 3,471), reduced to its three bodies:
+  // a 2.2 m, 24 kg plank pinned near its end to a 3 cm, 0.63 kg disc (inverse inertia 3,000 per
+  // kg m^2, the pin 5.5 cm from its centre), which carries a slider to a 3 cm, 3.2 kg disc thrown
+  // along it at 115 m/s. The coupling is violent and one Gauss-Seidel pass a substep leaves the
+  // pin 0.3 m apart, the small disc spinning at 130 rad/s, so the pin's error is corrected on
+  // the positions: solved on its linearization, that asked the small disc to turn 6 rad (turning
+  // is its cheap way to move the anchor), flipped the slider round, and the next warm start
+  // applied the slider's stored impulse in a geometry it was not found in: +60% of the energy in
+  // three steps. The correction now turns no body more than 8 degrees a substep. The forces are
+  // workless, gravity the only other one: the mechanical energy may only fall.
+  World world;
+  const BodyId plank = movingBody(world, {17.687225f, 29.793137f}, 2.731043f, {-1.538708f, -5.649376f}, 1.931601f);
+  ShapeDef plankShape;
+  plankShape.density = 23.996218f / (4.0f * 1.1f * 0.357f);
+  world.createShape(plank, plankShape, makeBox(1.1f, 0.357f)); // inertia 10.7 kg m^2, as in the soak
+  const auto disc = [&](const Vec2f& at, float angle, const Vec2f& v, float w, float mass, float radius) {
+    const BodyId body = movingBody(world, at, angle, v, w);
+    ShapeDef shape;
+    shape.density = mass / (3.14159265f * radius * radius);
+    world.createShape(body, shape, Circle{{}, radius});
+    return body;
+  };
+  const BodyId carrier =
+      disc({18.89546f, 29.79554f}, -1.941365f, {-1.514431f, 8.774425f}, 1.315818f, 0.625508f, 0.03236f);
+  const BodyId thrown =
+      disc({18.985556f, 29.793137f}, -2.368073f, {-115.308479f, -5.086277f}, 4.557075f, 3.234987f, 0.03186f);
+  RevoluteJointDef pin;
+  pin.bodyA = plank;
+  pin.bodyB = carrier;
+  pin.localAnchorA = inverseTransformPoint(world.transform(plank), Vec2f{18.843699f, 29.793137f});
+  pin.localAnchorB = inverseTransformPoint(world.transform(carrier), Vec2f{18.843699f, 29.793137f});
+  pin.referenceAngle = world.angle(carrier) - world.angle(plank);
+  world.createJoint(pin);
+  PrismaticJointDef slider;
+  slider.bodyA = carrier;
+  slider.bodyB = thrown;
+  slider.localAnchorA = inverseTransformPoint(world.transform(carrier), Vec2f{18.953699f, 29.793137f});
+  slider.localAnchorB = inverseTransformPoint(world.transform(thrown), Vec2f{18.953699f, 29.793137f});
+  slider.referenceAngle = world.angle(thrown) - world.angle(carrier);
+  slider.enableLimit = true;
+  slider.lowerTranslation = -1.0f;
+  slider.upperTranslation = 1.0f;
+  world.createJoint(slider);
+  const auto energy = [&] { return mechanicalEnergy(world, {plank, carrier, thrown}, 10.0); };
+  const double e0 = energy();
+  for (int i = 0; i < 120; ++i) {
+    world.step(dt);
+    ASSERT_LE(energy(), e0 + 0.001 * std::abs(e0)) << "step " << i;
+  }
+}
+
+TEST(SoakRegression2D, an_impact_along_a_chain_of_joints_is_not_thrown_again_by_the_warm_start) {
+  // The soak's seed 22, episode 7,746, reduced to its three bodies: a 20 cm, 107 kg block pinned
+  // to a 9 cm, 3.6 kg disc, which carries a slider to a 7 mm, 5 kg disc (inverse inertia 8,300
+  // per kg m^2) thrown at 189 m/s. The slider's limit stops the small disc in the first substep
+  // with an impulse of some 900 N s; the warm start applied it again in the next, throwing the
+  // disc back, and the chain's one Gauss-Seidel pass did not take it all back: 96 kJ became
+  // 610 kJ in the first step. The warm start is now trimmed where it would add kinetic energy
+  // to the jointed group. The forces are workless, gravity the only other one: the mechanical
+  // energy may only fall.
+  World world;
+  const BodyId block = movingBody(world, {-29.96451f, -54.449013f}, 1.204842f, {2.014543f, -2.522166f}, -2.850214f);
+  ShapeDef blockShape;
+  blockShape.density = 106.768799f / (4.0f * 0.1f * 0.05225f);
+  world.createShape(block, blockShape, makeBox(0.1f, 0.05225f)); // inertia 0.453 kg m^2, as in the soak
+  const auto disc = [&](const Vec2f& at, float angle, const Vec2f& v, float w, float mass, float radius) {
+    const BodyId body = movingBody(world, at, angle, v, w);
+    ShapeDef shape;
+    shape.density = mass / (3.14159265f * radius * radius);
+    world.createShape(body, shape, Circle{{}, radius});
+    return body;
+  };
+  const BodyId carrier =
+      disc({-29.792715f, -54.434589f}, 0.840765f, {-1.77967f, -1.690389f}, -0.402968f, 3.604023f, 0.04669f);
+  const BodyId thrown =
+      disc({-29.728601f, -54.434589f}, -3.01083f, {-14.571431f, -188.70726f}, 3.974842f, 4.992424f, 0.006931f);
+  RevoluteJointDef pin;
+  pin.bodyA = block;
+  pin.bodyB = carrier;
+  pin.localAnchorA = inverseTransformPoint(world.transform(block), Vec2f{-29.849899f, -54.434589f});
+  pin.localAnchorB = inverseTransformPoint(world.transform(carrier), Vec2f{-29.849899f, -54.434589f});
+  pin.referenceAngle = world.angle(carrier) - world.angle(block);
+  world.createJoint(pin);
+  PrismaticJointDef slider;
+  slider.bodyA = carrier;
+  slider.bodyB = thrown;
+  slider.localAnchorA = inverseTransformPoint(world.transform(carrier), Vec2f{-29.735531f, -54.434589f});
+  slider.localAnchorB = inverseTransformPoint(world.transform(thrown), Vec2f{-29.735531f, -54.434589f});
+  slider.referenceAngle = world.angle(thrown) - world.angle(carrier);
+  slider.enableLimit = true;
+  slider.lowerTranslation = -1.0f;
+  slider.upperTranslation = 1.0f;
+  world.createJoint(slider);
+  const auto energy = [&] { return mechanicalEnergy(world, {block, carrier, thrown}, 10.0); };
+  const double e0 = energy();
+  for (int i = 0; i < 120; ++i) {
+    world.step(dt);
+    ASSERT_LE(energy(), e0 + 0.001 * std::abs(e0)) << "step " << i;
   }
 }
 

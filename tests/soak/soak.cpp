@@ -11,8 +11,9 @@
 // seed and episode number. Checked after every step:
 //   - every body's position, rotation and velocities are finite;
 //   - no body leaves the walled arena (walls 5 m thick; fast bodies are bullets or rely on the
-//     continuous collision against static shapes), except one jointed to a kinematic body, which
-//     its infinitely heavy driver can drag anywhere, walls included;
+//     continuous collision against static shapes), except one jointed to a kinematic body
+//     (directly or through other bodies), which its infinitely heavy driver can drag anywhere,
+//     walls included;
 //   - every id the episode holds is valid and every id it destroyed is not; destroying a body
 //     also destroys its joints;
 //   - in closed episodes (no motors, springs, kinematic bodies, restitution or API changes),
@@ -361,22 +362,30 @@ void meddle(Episode& e, Random& rng) {
 
 bool finite(const Vec2f& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
-/// Whether a joint ties the body to a kinematic one. A kinematic body goes where it is sent,
-/// walls or not, with infinite mass, and its joints drag their partners with it: a wheel
-/// joint's line on a paddle spinning next to the floor sweeps through the floor, and a body
-/// sliding 20 m out along that line is pressed into the 5 m wall until it comes out on either
-/// side (seed 7, episode 17,592 of the jointed one-hour soak). Such a body can reach anywhere
-/// its driver's joint goes, so the arena bound does not hold it.
+/// Whether joints tie the body to a kinematic one, directly or through other bodies. A
+/// kinematic body goes where it is sent, walls or not, with infinite mass, and its joints drag
+/// their partners with it, and theirs theirs: a wheel joint's line on a paddle spinning next to
+/// the floor sweeps through the floor, and a body sliding 20 m out along that line is pressed
+/// into the 5 m wall until it comes out on either side (seed 7, episode 17,592 of the jointed
+/// one-hour soak), with a body on a rod to it (seed 22, episode 16,077). Such a body can reach
+/// anywhere its driver's joints go, so the arena bound does not hold it.
 bool draggedByKinematic(const Episode& e, BodyId b) {
-  for (const JointId j : e.joints) {
-    if (!e.world.isValid(j)) {
-      continue;
-    }
-    const BodyId a = e.world.jointBodyA(j);
-    const BodyId c = e.world.jointBodyB(j);
-    if ((a == b && e.world.bodyType(c) == BodyType::kinematicBody) ||
-        (c == b && e.world.bodyType(a) == BodyType::kinematicBody)) {
+  std::vector<BodyId> reached{b}; // the bodies jointed to b, directly or not, found so far
+  for (std::size_t next = 0; next < reached.size(); ++next) {
+    const BodyId at = reached[next];
+    if (e.world.bodyType(at) == BodyType::kinematicBody) {
       return true;
+    }
+    for (const JointId j : e.joints) {
+      if (!e.world.isValid(j)) {
+        continue;
+      }
+      const BodyId a = e.world.jointBodyA(j);
+      const BodyId c = e.world.jointBodyB(j);
+      const BodyId other = a == at ? c : (c == at ? a : at);
+      if (other != at && std::find(reached.begin(), reached.end(), other) == reached.end()) {
+        reached.push_back(other);
+      }
     }
   }
   return false;
