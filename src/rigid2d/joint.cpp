@@ -3,6 +3,7 @@
 // the substeps the reaction readouts and break events.
 #include "rigid2d/joints.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -115,41 +116,71 @@ void buildJointGroups(WorldState& w) {
   for (std::size_t k = 0; k < g.members.size(); ++k) {
     g.memberGroup[k] = findRoot(g.parent, g.members[k]);
   }
+  g.jointGroup.resize(w.joints.size());
+  for (std::size_t j = 0; j < w.joints.size(); ++j) {
+    const Joint& joint = w.joints[j];
+    const JointFrame& f = joint.frame;
+    const bool a = joint.solved && dynamicIndex(f.indexA, f.mA);
+    const bool b = joint.solved && dynamicIndex(f.indexB, f.mB);
+    g.jointGroup[j] = a ? findRoot(g.parent, f.indexA) : (b ? findRoot(g.parent, f.indexB) : JointGroups::noGroup);
+  }
+  g.hasSlider.resize(n);
+  for (const std::uint32_t group : g.memberGroup) {
+    g.hasSlider[group] = 0;
+  }
+  for (std::size_t j = 0; j < w.joints.size(); ++j) {
+    const JointType type = w.joints[j].type();
+    if (g.jointGroup[j] != JointGroups::noGroup && (type == JointType::prismatic || type == JointType::wheel)) {
+      g.hasSlider[g.jointGroup[j]] = 1;
+    }
+  }
   g.before.resize(g.members.size());
   g.slope.resize(n);
   g.curvature.resize(n);
+  g.energy.resize(n);
   g.share.resize(n);
 }
 
 namespace {
 
+/// The most kinetic energy a jointed group's warm start may add, as a share of the group's
+/// kinetic energy before it: a joint turning omega h rad a substep has a centripetal pull whose
+/// warm start adds (omega h)^2 of it (the relax pass has already turned the velocities along the
+/// joint at the substep's end, so J v = 0 when the warm start comes), 0.25 at half a radian a
+/// substep, where the position correction takes the joint over (positionShare). Without it a
+/// swinging cloth of 10,000 pinned discs (the `joint_grid` benchmark) stretched 0.66 m, with it
+/// 0.17. Not for a group holding a prismatic or wheel joint: their line-and-angle rows lock the
+/// bodies' relative turning, and a chain of them between bodies of little inertia is a block
+/// one Gauss-Seidel pass does not converge, so that whatever its warm start adds stays (the
+/// soak: two sliders between a 1.3 kg disc and bodies of 1.7 and 60 kg gained 1.3% of their
+/// energy scale in half a second with 5% allowed a substep). Those keep no energy gain at all.
+constexpr double maxWarmStartGain = 0.25;
+
 /// The share (0 to 1) of a jointed group's warm start to keep: the whole of it unless it adds
-/// kinetic energy to the group's bodies, else as much as adds none. Along the warm start's
-/// direction the energy is E(s) = E0 + s slope + s^2 curvature / 2; E(s) <= E0 up to
-/// s = -2 slope / curvature.
+/// more kinetic energy than `allowed` (J), else as much as adds that. Along the warm start's
+/// direction the energy is E(s) = E0 + s slope + s^2 curvature / 2.
 ///
 /// The warm start re-applies the last substep's impulses as a guess of this one's. Where the
 /// joints carry a load (a weight, a motor's drive) the forces since have undone last substep's
-/// impulses along them (J v = -K lambda), and the guess takes that energy out again: it is kept
-/// whole. Where they were an impact that stopped the bodies once, J v = 0 now, and applying them
-/// again throws the bodies back apart (adding lambda K lambda / 2) for the solve to take back.
-/// A lone joint's solve does that exactly; in a chain, one Gauss-Seidel pass does not, and the
-/// rest is energy from nowhere: the soak found a 7 mm, 5 kg disc thrown at 189 m/s along a
-/// slider on a 3.6 kg disc pinned to a 107 kg block gaining 500 kJ (68% of its episode's energy
-/// scale) in its first step, the warm start re-throwing it each substep; and chains of sliders
-/// between 1 cm discs whose accumulated impulses drifted apart, cancelling on the shared disc,
-/// until one warm start spun it past 10^5 rad/s (docs/reliability.md, "Soak", fixes 11, 13, 15).
-/// A centripetal pull is trimmed too: the relax pass has already turned the velocities along the
-/// joint at the substep's end, so J v = 0 when the warm start comes; the bias (or, turning fast,
-/// the position correction) holds such a joint, as it holds a lone one whatever the warm start.
-/// The test is over a group, not each joint: a hanging chain's links all fall together under
-/// gravity, so no one joint's guess takes energy out alone (each link's J v is zero), only all
-/// of them together.
-float keptShare(double slope, double curvature) {
-  if (!(curvature > 0.0) || -2.0 * slope >= curvature) {
-    return 1.0f; // nothing applied, or the whole of it adds no energy
+/// impulses along them (J v = -K lambda), and the guess takes that energy out again; a turning
+/// joint's centripetal pull adds a little (maxWarmStartGain). Where they were an impact that
+/// stopped the bodies once, J v = 0 now, and applying them again throws the bodies back apart
+/// for the solve to take back. A lone joint's solve does that exactly; in a chain, one
+/// Gauss-Seidel pass does not, and the rest is energy from nowhere: the soak found a 7 mm, 5 kg
+/// disc thrown at 189 m/s along a slider on a 3.6 kg disc pinned to a 107 kg block gaining
+/// 500 kJ (68% of its episode's energy scale) in its first step, each warm start tripling the
+/// trio's energy; and chains of sliders between 1 cm discs whose accumulated impulses drifted
+/// apart, cancelling on the shared disc, until one warm start spun it past 10^5 rad/s
+/// (docs/reliability.md, "Soak", fixes 11, 13 and 15). The test is over a group, not each joint:
+/// a hanging chain's links all fall together under gravity, so no one joint's guess takes
+/// energy out alone (each link's J v is zero), only all of them together.
+float keptShare(double slope, double curvature, double allowed) {
+  if (!(curvature > 0.0) || slope + 0.5 * curvature <= allowed) {
+    return 1.0f; // nothing applied, or the whole of it is within the allowance
   }
-  return slope >= 0.0 ? 0.0f : static_cast<float>(-2.0 * slope / curvature);
+  // The larger root of s slope + s^2 curvature / 2 = allowed (allowed >= 0: a root in [0, 1)).
+  const double s = (-slope + std::sqrt(slope * slope + 2.0 * curvature * allowed)) / curvature;
+  return static_cast<float>(std::clamp(s, 0.0, 1.0));
 }
 
 } // namespace
@@ -160,6 +191,7 @@ void warmStartJoints(WorldState& w, const StepContext& context) {
   for (std::size_t k = 0; k < g.members.size(); ++k) {
     g.before[k] = w.states[g.members[k]];
     g.slope[g.memberGroup[k]] = 0.0;
+    g.energy[g.memberGroup[k]] = 0.0;
     g.curvature[g.memberGroup[k]] = 0.0;
   }
   for (Joint& joint : w.joints) {
@@ -178,10 +210,13 @@ void warmStartJoints(WorldState& w, const StepContext& context) {
     const std::uint32_t group = g.memberGroup[k];
     g.slope[group] += m * (s0.v.x * dvx + s0.v.y * dvy) + inertia * s0.w * dw;
     g.curvature[group] += m * (dvx * dvx + dvy * dvy) + inertia * dw * dw;
+    g.energy[group] += 0.5 * (m * (static_cast<double>(s0.v.x) * s0.v.x + static_cast<double>(s0.v.y) * s0.v.y) +
+                              inertia * s0.w * s0.w);
   }
   for (std::size_t k = 0; k < g.members.size(); ++k) {
     const std::uint32_t group = g.memberGroup[k];
-    const float share = g.share[group] = keptShare(g.slope[group], g.curvature[group]);
+    const double allowed = g.hasSlider[group] != 0 ? 0.0 : maxWarmStartGain * g.energy[group];
+    const float share = g.share[group] = keptShare(g.slope[group], g.curvature[group], allowed);
     if (share < 1.0f) {
       const BodyState& s0 = g.before[k];
       BodyState& s = w.states[g.members[k]];
@@ -189,19 +224,16 @@ void warmStartJoints(WorldState& w, const StepContext& context) {
       s.w = s0.w + (s.w - s0.w) * share;
     }
   }
-  for (Joint& joint : w.joints) {
+  for (std::size_t j = 0; j < w.joints.size(); ++j) {
+    Joint& joint = w.joints[j];
     if (!joint.solved) {
       continue;
     }
-    const JointFrame& f = joint.frame;
-    const std::uint32_t member = f.indexA < staticIndex && g.isMember[f.indexA] != 0 ? f.indexA : f.indexB;
-    if (member < staticIndex && g.isMember[member] != 0) {
-      const float share = g.share[findRoot(g.parent, member)];
-      if (share < 1.0f) {
-        std::visit([&](auto& data) { scaleImpulses(data, share); }, joint.data);
-      }
+    const std::uint32_t group = g.jointGroup[j];
+    if (group != JointGroups::noGroup && g.share[group] < 1.0f) {
+      std::visit([&](auto& data) { scaleImpulses(data, g.share[group]); }, joint.data);
     }
-    clampJointBodies(w, f, context);
+    clampJointBodies(w, joint.frame, context);
   }
 }
 

@@ -1,12 +1,13 @@
 // The soft step (after Erin Catto's Solver2D and Box2D v3): the order of one step's solve.
 //
 // The awake bodies get compact solver indices; then, `substeps` times: integrate velocities
-// (gravity, applied forces, damping), warm start the contacts with their accumulated impulses,
-// solve them with bias (soft constraints that push overlap apart at a bounded speed), integrate
-// positions (as deltas), relax (solve again without bias, taking back the velocity the bias
-// added), and correct on the positions the share of a fast-turning joint's error its bias left
-// alone (positionShare, joint_solver.hpp). Restitution is applied once at the end, and the
-// impulses are stored for the next step.
+// (gravity, applied forces, damping), warm start the contacts with their accumulated impulses
+// and then the joints (each jointed group's warm start measured with the contacts' support in:
+// warmStartJoints), solve them with bias (soft constraints that push overlap apart at a bounded
+// speed), integrate positions (as deltas), relax (solve again without bias, taking back the
+// velocity the bias added), and correct on the positions the share of a fast-turning joint's
+// error its bias left alone (positionShare, joint_solver.hpp). Restitution is applied once at
+// the end, and the impulses are stored for the next step.
 #include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
 
@@ -136,8 +137,8 @@ void solve(WorldState& w, float dt) {
   prepareContacts(w, context);
   for (int substep = 0; substep < context.substeps; ++substep) {
     integrateVelocities(w, context);
-    warmStartJoints(w, context);
     warmStartContacts(w);
+    warmStartJoints(w, context);
     solveJoints(w, context, true);
     solveContacts(w, context, true);
     integratePositions(w, context);
