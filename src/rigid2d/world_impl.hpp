@@ -265,8 +265,8 @@ struct WorldState {
   std::unique_ptr<ContactSolverData> contactSolver;
   std::vector<BulletStart> bullets;        ///< scratch of the finalize pass
   std::vector<std::uint32_t> islandParent; ///< scratch of the sleep pass (union-find by body slot)
-  JointGroups jointGroups;                 ///< scratch of the joints' warm start
   std::vector<float> islandRest;           ///< scratch of the sleep pass (least rest time per island)
+  JointGroups jointGroups;                 ///< scratch of the joints' warm start
 
   ContactEvents contactEvents;
   SensorEvents sensorEvents;
