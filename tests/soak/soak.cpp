@@ -11,9 +11,10 @@
 // seed and episode number. Checked after every step:
 //   - every body's position, rotation and velocities are finite;
 //   - no body leaves the walled arena (walls 5 m thick; fast bodies are bullets or rely on the
-//     continuous collision against static shapes), except one that joints to a kinematic body
-//     (directly or through other bodies) dragged into a wall: its infinitely heavy driver can
-//     drag it anywhere, and, freed inside a wall, it is pushed out of the nearer face;
+//     continuous collision against static shapes), except one that a kinematic body (touching
+//     it, or jointed to it directly or through other bodies) drove into a wall: its infinitely
+//     heavy driver can take it anywhere, and, freed inside a wall, it is pushed out of the
+//     nearer face;
 //   - every id the episode holds is valid and every id it destroyed is not; destroying a body
 //     also destroys its joints;
 //   - in closed episodes (no motors, springs, kinematic bodies, restitution or API changes),
@@ -89,9 +90,9 @@ struct Episode {
   std::vector<JointId> joints;   ///< live joints
   std::vector<BodyId> destroyed; ///< ids that must stay invalid
   std::vector<JointId> destroyedJoints;
-  /// Bodies a kinematic body's joints dragged into a wall: exempt from the arena bound for the
-  /// rest of the episode (draggedByKinematic).
-  std::vector<BodyId> draggedIntoWalls;
+  /// Bodies a kinematic body drove into a wall: exempt from the arena bound for the rest of the
+  /// episode (drivenByKinematic).
+  std::vector<BodyId> drivenIntoWalls;
   bool closed = false;
   double energy0 = 0.0;
   double energyScale = 0.0;
@@ -365,17 +366,29 @@ void meddle(Episode& e, Random& rng) {
 
 bool finite(const Vec2f& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
-/// Whether joints tie the body to a kinematic one, directly or through other bodies. A
-/// kinematic body goes where it is sent, walls or not, with infinite mass, and its joints drag
-/// their partners with it, and theirs theirs: a wheel joint's line on a paddle spinning next to
-/// the floor sweeps through the floor, and a body sliding 20 m out along that line is pressed
-/// into the 5 m wall until it comes out on either side (seed 7, episode 17,592 of the jointed
-/// one-hour soak), with a body on a rod to it (seed 22, episode 16,077). Such a body can reach
-/// anywhere its driver's joints go, so the arena bound does not hold it; nor once its joint is
-/// gone, if it was left in a wall: a 10 m body pressed 4.6 m deep into the 5 m floor by a
-/// slider on a paddle, then freed when the game destroyed the paddle, is pushed out of the
-/// nearer face, the floor's underside (the sliders' one-hour soak, seed 7, episode 8,844).
-bool draggedByKinematic(const Episode& e, BodyId b) {
+/// Whether a kinematic body drives the body: touches it, or joints tie it to one, directly or
+/// through other bodies. A kinematic body goes where it is sent, walls or not, with infinite
+/// mass, and what it drives goes with it: a wheel joint's line on a paddle spinning next to the
+/// floor sweeps through the floor, and a body sliding 20 m out along that line is pressed into
+/// the 5 m wall until it comes out on either side (seed 7, episode 17,592 of the jointed
+/// one-hour soak), with a body on a rod to it (seed 22, episode 16,077); a 23 cm, 26 kg body
+/// caught between a paddle's tip and a wall is squeezed through the wall (seed 8 --prismatic off,
+/// episode 23,125: no solver can hold both an infinitely heavy driver and a wall). Such a body
+/// can reach anywhere its driver goes, so the arena bound does not hold it; nor once freed, if
+/// it was left in a wall: a 10 m body pressed 4.6 m deep into the 5 m floor by a slider on a
+/// paddle, then freed when the game destroyed the paddle, is pushed out of the nearer face, the
+/// floor's underside (the sliders' one-hour soak, seed 7, episode 8,844).
+bool drivenByKinematic(const Episode& e, BodyId b) {
+  std::vector<ContactData> contacts;
+  e.world.contacts(contacts);
+  for (const ContactData& c : contacts) {
+    const BodyId a = e.world.shapeBody(c.shapeA);
+    const BodyId d = e.world.shapeBody(c.shapeB);
+    if ((a == b && e.world.bodyType(d) == BodyType::kinematicBody) ||
+        (d == b && e.world.bodyType(a) == BodyType::kinematicBody)) {
+      return true;
+    }
+  }
   std::vector<BodyId> reached{b}; // the bodies jointed to b, directly or not, found so far
   for (std::size_t next = 0; next < reached.size(); ++next) {
     const BodyId at = reached[next];
@@ -410,10 +423,10 @@ std::optional<Failure> check(Episode& e, EpisodeStats& stats) {
     }
     const Vec2f c = e.world.worldCenterOfMass(b);
     const auto marked = [&] {
-      return std::find(e.draggedIntoWalls.begin(), e.draggedIntoWalls.end(), b) != e.draggedIntoWalls.end();
+      return std::find(e.drivenIntoWalls.begin(), e.drivenIntoWalls.end(), b) != e.drivenIntoWalls.end();
     };
-    if ((std::abs(c.x) > arenaHalfWidth || std::abs(c.y) > arenaHalfWidth) && !marked() && draggedByKinematic(e, b)) {
-      e.draggedIntoWalls.push_back(b);
+    if ((std::abs(c.x) > arenaHalfWidth || std::abs(c.y) > arenaHalfWidth) && !marked() && drivenByKinematic(e, b)) {
+      e.drivenIntoWalls.push_back(b);
     }
     // A centre can reach at most a shape's size past the inner wall face; 10 m shapes exist.
     const float bound = arenaHalfWidth + wallThickness;
