@@ -72,6 +72,20 @@ void clampJointBodies(WorldState& w, const JointFrame& f, const StepContext& con
 
 } // namespace
 
+namespace {
+
+/// Whether the joint has a row that does work on its bodies (a motor, a spring, a soft weld, a
+/// motor or mouse joint): their warm start may add energy by right.
+bool doesWork(const RevoluteJoint& joint) { return joint.def.enableMotor || joint.def.enableSpring; }
+bool doesWork(const PrismaticJoint& joint) { return joint.def.enableMotor || joint.def.enableSpring; }
+bool doesWork(const DistanceJoint& joint) { return joint.def.enableMotor || joint.def.enableSpring; }
+bool doesWork(const WheelJoint& joint) { return joint.def.enableMotor || joint.def.enableSpring; }
+bool doesWork(const WeldJoint& joint) { return joint.def.linearHertz > 0.0f || joint.def.angularHertz > 0.0f; }
+bool doesWork(const MotorJoint&) { return true; }
+bool doesWork(const MouseJoint&) { return true; }
+
+} // namespace
+
 /// The jointed groups of this step (JointGroups), after the joints are prepared.
 void buildJointGroups(WorldState& w) {
   JointGroups& g = w.jointGroups;
@@ -124,15 +138,26 @@ void buildJointGroups(WorldState& w) {
     const bool b = joint.solved && dynamicIndex(f.indexB, f.mB);
     g.jointGroup[j] = a ? findRoot(g.parent, f.indexA) : (b ? findRoot(g.parent, f.indexB) : JointGroups::noGroup);
   }
-  g.hasSlider.resize(n);
+  // What each group holds: 1 for a slider (prismatic or wheel joint), 2 for a row that does
+  // work (a motor, a spring, a soft weld, the motor and mouse joints, or any joint to a
+  // kinematic body, which moves as it is told): see warmStartJoints.
+  g.kind.resize(n);
   for (const std::uint32_t group : g.memberGroup) {
-    g.hasSlider[group] = 0;
+    g.kind[group] = 0;
   }
   for (std::size_t j = 0; j < w.joints.size(); ++j) {
-    const JointType type = w.joints[j].type();
-    if (g.jointGroup[j] != JointGroups::noGroup && (type == JointType::prismatic || type == JointType::wheel)) {
-      g.hasSlider[g.jointGroup[j]] = 1;
+    const Joint& joint = w.joints[j];
+    if (g.jointGroup[j] == JointGroups::noGroup) {
+      continue;
     }
+    const JointFrame& f = joint.frame;
+    const bool kinematic = (f.indexA < n && f.mA == 0.0f) || (f.indexB < n && f.mB == 0.0f);
+    const bool slider = joint.type() == JointType::prismatic || joint.type() == JointType::wheel;
+    std::uint8_t& kind = g.kind[g.jointGroup[j]];
+    kind |= static_cast<std::uint8_t>(
+        (slider ? JointGroups::slider : 0) |
+        (kinematic || std::visit([](const auto& data) { return doesWork(data); }, joint.data) ? JointGroups::working
+                                                                                              : 0));
   }
   g.before.resize(g.members.size());
   g.slope.resize(n);
@@ -146,8 +171,9 @@ namespace {
 /// The most kinetic energy a jointed group's warm start may add, as a share of the group's
 /// kinetic energy before it: a joint turning omega h rad a substep has a centripetal pull whose
 /// warm start adds (omega h)^2 of it (the relax pass has already turned the velocities along the
-/// joint at the substep's end, so J v = 0 when the warm start comes), 0.25 at half a radian a
-/// substep, where the position correction takes the joint over (positionShare). Without it a
+/// joint at the substep's end, so J v = 0 when the warm start comes): 0.25 at half a radian a
+/// substep, the fastest whirls the soak makes (fix 10; the position correction has had their
+/// errors from 0.2 rad a substep on, positionShare). Without it a
 /// swinging cloth of 10,000 pinned discs (the `joint_grid` benchmark) stretched 0.66 m, with it
 /// 0.17. Not for a group holding a prismatic or wheel joint: their line-and-angle rows lock the
 /// bodies' relative turning, and a chain of them between bodies of little inertia is a block
@@ -178,9 +204,11 @@ float keptShare(double slope, double curvature, double allowed) {
   if (!(curvature > 0.0) || slope + 0.5 * curvature <= allowed) {
     return 1.0f; // nothing applied, or the whole of it is within the allowance
   }
-  // The larger root of s slope + s^2 curvature / 2 = allowed (allowed >= 0: a root in [0, 1)).
-  const double s = (-slope + std::sqrt(slope * slope + 2.0 * curvature * allowed)) / curvature;
-  return static_cast<float>(std::clamp(s, 0.0, 1.0));
+  // The larger root of s slope + s^2 curvature / 2 = allowed (allowed >= 0: a root in [0, 1)),
+  // in the form without cancellation for either sign of the slope.
+  const double root = std::sqrt(slope * slope + 2.0 * curvature * allowed);
+  const double s = slope <= 0.0 ? (root - slope) / curvature : 2.0 * allowed / (slope + root);
+  return s >= 0.0 ? static_cast<float>(std::min(s, 1.0)) : 0.0f; // NaN (an infinite velocity): none
 }
 
 } // namespace
@@ -215,7 +243,11 @@ void warmStartJoints(WorldState& w, const StepContext& context) {
   }
   for (std::size_t k = 0; k < g.members.size(); ++k) {
     const std::uint32_t group = g.memberGroup[k];
-    const double allowed = g.hasSlider[group] != 0 ? 0.0 : maxWarmStartGain * g.energy[group];
+    if ((g.kind[group] & JointGroups::working) != 0) {
+      g.share[group] = 1.0f;
+      continue;
+    }
+    const double allowed = (g.kind[group] & JointGroups::slider) != 0 ? 0.0 : maxWarmStartGain * g.energy[group];
     const float share = g.share[group] = keptShare(g.slope[group], g.curvature[group], allowed);
     if (share < 1.0f) {
       const BodyState& s0 = g.before[k];
@@ -233,6 +265,9 @@ void warmStartJoints(WorldState& w, const StepContext& context) {
     if (group != JointGroups::noGroup && g.share[group] < 1.0f) {
       std::visit([&](auto& data) { scaleImpulses(data, g.share[group]); }, joint.data);
     }
+    // Held to the speed limits only now: the warm starts of joints sharing a body may cancel on
+    // it, and a clamp between them would break that (soak fix 5); the trim needs them unclamped
+    // too, to stay linear in the share.
     clampJointBodies(w, joint.frame, context);
   }
 }

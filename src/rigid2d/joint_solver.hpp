@@ -1,8 +1,9 @@
 // Joints inside the solver: the common part of every joint (bodies, anchors, the solver's
 // per-step frames) and the per-type parts, one file per type (revolute_joint.cpp, ...). Each
 // type provides prepare, warm start, solve (with or without bias, like the contacts) and its
-// reaction, and is called in joint order, before the contacts of each stage (joints are few and
-// hold structures together: solving them first lets the contacts see their result).
+// reaction, and is called in joint order: the solves before the contacts' of each stage (joints
+// are few and hold structures together: solving them first lets the contacts see their result),
+// the warm start after the contacts' (warmStartJoints measures it with their support in).
 #pragma once
 
 #include "rigid2d/world_impl.hpp"
@@ -185,15 +186,16 @@ inline void solvePointConstraint(Vec2f& linear, const JointFrame& f, BodyState& 
   b.w += f.iB * cross(rB, impulse);
 }
 
-/// The most a position correction may turn a body, rad (Box2D 2.4's maxAngularCorrection, 8
+/// The most one position correction may turn a body, rad (Box2D 2.4's maxAngularCorrection, 8
 /// degrees). The correction is solved on the joint's linearization at the current pose: turning
-/// a body by theta moves its anchor by theta x r. A pin pulled 0.3 m apart on a 1 cm, 0.6 kg disc
+/// a body by theta moves its anchor by theta x r. A pin pulled 0.3 m apart on a 3 cm, 0.6 kg disc
 /// whose anchor is 5 cm from its centre (inverse inertia 3000: turning is the cheap way to move
 /// the anchor) asks for a 6 rad turn, which moves the anchor nowhere near where the
 /// linearization said, and flips the disc's other joints round: the next warm start then applies
 /// their stored impulses in a geometry they were not found in. The soak found such a chain (a
-/// plank, the disc, a rod to a body thrown at 115 m/s) gaining 60% of its energy in three steps.
-/// Capped, the correction goes in steps the linearization holds for, and the next substeps finish it.
+/// plank, the disc, a slider to a disc thrown at 115 m/s) gaining 60% of its energy in three
+/// steps. Capped, the correction goes in steps the linearization holds for, and the next
+/// substeps finish it.
 constexpr float maxCorrectionTurn = 0.1396f;
 
 /// Applies a position correction: linear impulse `p` (kg m: moves B by p/mB, A by -p/mA) and the

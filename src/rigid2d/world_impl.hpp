@@ -185,18 +185,20 @@ inline std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t 
 /// rebuilt each step.
 struct JointGroups {
   static constexpr std::uint32_t noGroup = 0xffffffffu;
-  std::vector<std::uint32_t> parent;      ///< union-find by solver index
-  std::vector<std::uint8_t> isMember;     ///< by solver index
-  std::vector<std::uint32_t> members;     ///< solver indices of the dynamic bodies in joints
-  std::vector<std::uint32_t> memberGroup; ///< each member's group: its root's solver index
-  std::vector<std::uint32_t> jointGroup;  ///< by joint slot: its group, or noGroup (asleep, or no dynamic body)
-  std::vector<float> memberMass;          ///< kg
-  std::vector<float> memberInertia;       ///< kg m^2 (0: fixed rotation)
-  std::vector<BodyState> before;          ///< the members' velocities before the warm start
-  std::vector<double> slope, curvature;   ///< by group: the warm start's line search (J, J)
-  std::vector<double> energy;             ///< by group: the kinetic energy before the warm start, J
-  std::vector<std::uint8_t> hasSlider;    ///< by group: 1 if it holds a prismatic or wheel joint
-  std::vector<float> share;               ///< by group: the share of the warm start kept
+  std::vector<std::uint32_t> parent;         ///< union-find by solver index
+  std::vector<std::uint8_t> isMember;        ///< by solver index
+  std::vector<std::uint32_t> members;        ///< solver indices of the dynamic bodies in joints
+  std::vector<std::uint32_t> memberGroup;    ///< each member's group: its root's solver index
+  std::vector<std::uint32_t> jointGroup;     ///< by joint slot: its group, or noGroup (asleep, or no dynamic body)
+  std::vector<float> memberMass;             ///< kg
+  std::vector<float> memberInertia;          ///< kg m^2 (0: fixed rotation)
+  std::vector<BodyState> before;             ///< the members' velocities before the warm start
+  std::vector<double> slope, curvature;      ///< by group: the warm start's line search (J, J)
+  std::vector<double> energy;                ///< by group: the kinetic energy before the warm start, J
+  static constexpr std::uint8_t slider = 1;  ///< kind: holds a prismatic or wheel joint
+  static constexpr std::uint8_t working = 2; ///< kind: holds a row that does work (joint.cpp)
+  std::vector<std::uint8_t> kind;            ///< by group: slider | working
+  std::vector<float> share;                  ///< by group: the share of the warm start kept
 };
 
 struct ContactSolverData; // contact_solver.cpp
