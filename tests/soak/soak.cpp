@@ -11,10 +11,9 @@
 // seed and episode number. Checked after every step:
 //   - every body's position, rotation and velocities are finite;
 //   - no body leaves the walled arena (walls 5 m thick; fast bodies are bullets or rely on the
-//     continuous collision against static shapes), except one that a kinematic body (touching
-//     it, or jointed to it directly or through other bodies) drove into a wall: its infinitely
-//     heavy driver can take it anywhere, and, freed inside a wall, it is pushed out of the
-//     nearer face;
+//     continuous collision against static shapes), except one that a kinematic body drove into
+//     a wall (through joints and contacts): its infinitely heavy driver can take it anywhere,
+//     and, freed inside a wall, it is pushed out of the nearer face;
 //   - every id the episode holds is valid and every id it destroyed is not; destroying a body
 //     also destroys its joints;
 //   - in closed episodes (no motors, springs, kinematic bodies, restitution or API changes),
@@ -366,14 +365,16 @@ void meddle(Episode& e, Random& rng) {
 
 bool finite(const Vec2f& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
-/// Whether a kinematic body drives the body: touches it, or joints tie it to one, directly or
-/// through other bodies. A kinematic body goes where it is sent, walls or not, with infinite
+/// Whether a kinematic body drives the body: a chain of joints and touching contacts through
+/// dynamic bodies links the two. A kinematic body goes where it is sent, walls or not, with infinite
 /// mass, and what it drives goes with it: a wheel joint's line on a paddle spinning next to the
 /// floor sweeps through the floor, and a body sliding 20 m out along that line is pressed into
 /// the 5 m wall until it comes out on either side (seed 7, episode 17,592 of the jointed
 /// one-hour soak), with a body on a rod to it (seed 22, episode 16,077); a 23 cm, 26 kg body
 /// caught between a paddle's tip and a wall is squeezed through the wall (seed 8 --prismatic off,
-/// episode 23,125: no solver can hold both an infinitely heavy driver and a wall). Such a body
+/// episode 23,125: no solver can hold both an infinitely heavy driver and a wall), and a 10 m
+/// plank pinned to a paddle presses another 10 m body into the floor (seed 8 --prismatic off,
+/// episode 8,772). Such a body
 /// can reach anywhere its driver goes, so the arena bound does not hold it; nor once freed, if
 /// it was left in a wall: a 10 m body pressed 4.6 m deep into the 5 m floor by a slider on a
 /// paddle, then freed when the game destroyed the paddle, is pushed out of the nearer face, the
@@ -381,30 +382,31 @@ bool finite(const Vec2f& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 bool drivenByKinematic(const Episode& e, BodyId b) {
   std::vector<ContactData> contacts;
   e.world.contacts(contacts);
-  for (const ContactData& c : contacts) {
-    const BodyId a = e.world.shapeBody(c.shapeA);
-    const BodyId d = e.world.shapeBody(c.shapeB);
-    if ((a == b && e.world.bodyType(d) == BodyType::kinematicBody) ||
-        (d == b && e.world.bodyType(a) == BodyType::kinematicBody)) {
-      return true;
+  // Breadth first through joints and touching contacts, from b, across dynamic bodies only (a
+  // static wall drives nothing, and through it everything would be linked).
+  std::vector<BodyId> reached{b};
+  const auto reach = [&](BodyId from, BodyId a, BodyId c) {
+    const BodyId other = a == from ? c : (c == from ? a : from);
+    if (other != from && std::find(reached.begin(), reached.end(), other) == reached.end()) {
+      reached.push_back(other);
     }
-  }
-  std::vector<BodyId> reached{b}; // the bodies jointed to b, directly or not, found so far
+  };
   for (std::size_t next = 0; next < reached.size(); ++next) {
     const BodyId at = reached[next];
-    if (e.world.bodyType(at) == BodyType::kinematicBody) {
+    const BodyType type = e.world.bodyType(at);
+    if (type == BodyType::kinematicBody) {
       return true;
     }
+    if (type == BodyType::staticBody) {
+      continue;
+    }
     for (const JointId j : e.joints) {
-      if (!e.world.isValid(j)) {
-        continue;
+      if (e.world.isValid(j)) {
+        reach(at, e.world.jointBodyA(j), e.world.jointBodyB(j));
       }
-      const BodyId a = e.world.jointBodyA(j);
-      const BodyId c = e.world.jointBodyB(j);
-      const BodyId other = a == at ? c : (c == at ? a : at);
-      if (other != at && std::find(reached.begin(), reached.end(), other) == reached.end()) {
-        reached.push_back(other);
-      }
+    }
+    for (const ContactData& c : contacts) {
+      reach(at, e.world.shapeBody(c.shapeA), e.world.shapeBody(c.shapeB));
     }
   }
   return false;
