@@ -103,6 +103,19 @@ inline void turnBy(BodyState& s, float angle) {
   s.dq = normalize(Rot2f{s.dq.c - angle * s.dq.s, s.dq.s + angle * s.dq.c});
 }
 
+/// The share of their accumulated impulses the prismatic and wheel joints warm start with
+/// (Bullet's warmstartingFactor, 0.85, does so for every constraint). Their line-and-angle rows
+/// lock the bodies' relative turning, and chains of them between bodies of tiny inertia do not
+/// converge in a Gauss-Seidel pass: accumulated impulses drift apart, cancelling on a shared
+/// body, until one warm start spins it past 10^5 rad/s (soak fixes 11 and 13). Let go, that drift
+/// decays as 0.8^n; a lone slider's solve is exact and needs no warm start. The trimming of a
+/// passive group's warm start (warmStartJoints, joint.cpp) covers most such chains, but not a
+/// group with a motor or a spring (a wheel's suspension), which keeps its warm start whole: a
+/// body the game teleported 50 m from its slider partner, a wheel joint on the other side, set
+/// the three flailing at 300 m/s for 25 s until one went through the floor (the sliders'
+/// one-hour soak, seed 7, episode 18,288).
+constexpr float sliderWarmStartFactor = 0.8f;
+
 /// The effective mass matrix of a point constraint at anchors rA, rB (the 2x2 K with
 /// K v = relative velocity change per unit impulse).
 [[nodiscard]] inline Mat22f pointMass(const JointFrame& f, const Vec2f& rA, const Vec2f& rB) {

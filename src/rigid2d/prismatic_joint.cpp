@@ -186,6 +186,7 @@ void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
+  scaleImpulses(joint, sliderWarmStartFactor);
   joint.torqueOnA = 0.0f;
   joint.torqueOnB = 0.0f;
   applySlider(joint, g, frame, a, b, accumulatedAxial(joint), joint.impulse.x, joint.impulse.y);

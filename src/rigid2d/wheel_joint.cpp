@@ -29,6 +29,7 @@ void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<Body
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
+  scaleImpulses(joint, sliderWarmStartFactor);
   const float axial = joint.springImpulse + joint.lowerImpulse - joint.upperImpulse;
   const Vec2f p = g.axis * axial + g.normal * joint.perpImpulse;
   a.v -= p * frame.mA;
