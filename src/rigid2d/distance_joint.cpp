@@ -99,11 +99,6 @@ SpringCoefficients springCoefficients(float hertz, float dampingRatio, float h) 
   return {h * omega * omega, 2.0f * dampingRatio * hw + theta * hw * hw, std::clamp((hw - 0.5f) / 0.25f, 0.0f, 1.0f)};
 }
 
-/// Rigid (a rod) unless a spring is asked for; a spring whose limits pin the length is a rod too.
-bool isRigid(const DistanceJointDef& def) {
-  return !def.enableSpring || (def.enableLimit && def.minLength >= def.maxLength);
-}
-
 /// A one-sided limit on c (+1: lower, c = length - minLength; -1: upper, c = maxLength - length).
 void solveLimit(float& accumulated, float c, float direction, BodyState& a, BodyState& b, const JointFrame& f,
                 const AxisGeometry& g, float mass, const StepContext& context, bool useBias) {
@@ -112,6 +107,10 @@ void solveLimit(float& accumulated, float c, float direction, BodyState& a, Body
 }
 
 } // namespace
+
+bool isRigid(const DistanceJointDef& def) {
+  return !def.enableSpring || (def.enableLimit && def.minLength >= def.maxLength);
+}
 
 void prepareJoint(DistanceJoint& joint, const JointFrame& frame, const StepContext& context) {
   const DistanceJointDef& def = joint.def;
@@ -136,11 +135,14 @@ void prepareJoint(DistanceJoint& joint, const JointFrame& frame, const StepConte
 }
 
 void warmStartJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex) {
+                    std::uint32_t staticIndex, JointRows rows) {
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const AxisGeometry g = currentGeometry(frame, a, b);
-  applyAxial(a, b, frame, g, joint.impulse + joint.lowerImpulse - joint.upperImpulse + joint.motorImpulse);
+  applyAxial(a, b, frame, g,
+             pick(rows, lengthRow(joint), joint.impulse) + pick(rows, JointRows::passive, joint.lowerImpulse) -
+                 pick(rows, JointRows::passive, joint.upperImpulse) +
+                 pick(rows, JointRows::working, joint.motorImpulse));
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
 }

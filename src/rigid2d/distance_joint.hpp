@@ -31,15 +31,29 @@ struct DistanceJoint {
 };
 
 void prepareJoint(DistanceJoint& joint, const JointFrame& frame, const StepContext& context);
-/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
-inline void scaleImpulses(DistanceJoint& joint, float scale) {
-  joint.impulse = joint.impulse * scale;
-  joint.lowerImpulse = joint.lowerImpulse * scale;
-  joint.upperImpulse = joint.upperImpulse * scale;
-  joint.motorImpulse = joint.motorImpulse * scale;
+/// Rigid (a rod) unless a spring is asked for; a spring whose limits pin the length is a rod too.
+[[nodiscard]] bool isRigid(const DistanceJointDef& def);
+/// The rows of `impulse`: a rod's is passive, a spring's may do work.
+[[nodiscard]] inline JointRows lengthRow(const DistanceJoint& joint) {
+  return isRigid(joint.def) ? JointRows::passive : JointRows::working;
 }
+/// Scales the accumulated impulses of `rows` (what the warm start applied): warmStartJoints'
+/// line search. The spring and motor may do work; a rod and the limits are passive.
+inline void scaleImpulses(DistanceJoint& joint, float scale, JointRows rows) {
+  if (includes(rows, lengthRow(joint))) {
+    joint.impulse = joint.impulse * scale;
+  }
+  if (includes(rows, JointRows::passive)) {
+    joint.lowerImpulse = joint.lowerImpulse * scale;
+    joint.upperImpulse = joint.upperImpulse * scale;
+  }
+  if (includes(rows, JointRows::working)) {
+    joint.motorImpulse = joint.motorImpulse * scale;
+  }
+}
+/// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex);
+                    std::uint32_t staticIndex, JointRows rows);
 void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
 /// The force on body B over the last substep (the impulses along the axis times the substep

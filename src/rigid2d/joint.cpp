@@ -74,15 +74,22 @@ void clampJointBodies(WorldState& w, const JointFrame& f, const StepContext& con
 
 namespace {
 
-/// Whether the joint has a row that does work on its bodies (a motor, a spring, a soft weld, a
-/// motor or mouse joint): their warm start may add energy by right.
-bool doesWork(const RevoluteJoint& joint) { return joint.def.enableMotor || joint.def.enableSpring; }
-bool doesWork(const PrismaticJoint& joint) { return joint.def.enableMotor || joint.def.enableSpring; }
-bool doesWork(const DistanceJoint& joint) { return joint.def.enableMotor || joint.def.enableSpring; }
-bool doesWork(const WheelJoint& joint) { return joint.def.enableMotor || joint.def.enableSpring; }
-bool doesWork(const WeldJoint& joint) { return joint.def.linearHertz > 0.0f || joint.def.angularHertz > 0.0f; }
-bool doesWork(const MotorJoint&) { return true; }
-bool doesWork(const MouseJoint&) { return true; }
+/// The joint's rows that may do work on its bodies (JointRows): none, some (`working`: a motor,
+/// a spring, a soft weld's rows) or all (the motor and mouse joints, which drive B to a target).
+template <class JointData> JointRows rowsWithMotorOrSpring(const JointData& joint) {
+  return joint.def.enableMotor || joint.def.enableSpring ? JointRows::working : JointRows::none;
+}
+JointRows workingRowsOf(const RevoluteJoint& joint) { return rowsWithMotorOrSpring(joint); }
+JointRows workingRowsOf(const PrismaticJoint& joint) { return rowsWithMotorOrSpring(joint); }
+JointRows workingRowsOf(const WheelJoint& joint) { return rowsWithMotorOrSpring(joint); }
+JointRows workingRowsOf(const DistanceJoint& joint) {
+  return isRigid(joint.def) ? JointRows::none : JointRows::working; // a rod has no motor either
+}
+JointRows workingRowsOf(const WeldJoint& joint) {
+  return joint.def.linearHertz > 0.0f || joint.def.angularHertz > 0.0f ? JointRows::working : JointRows::none;
+}
+JointRows workingRowsOf(const MotorJoint&) { return JointRows::all; }
+JointRows workingRowsOf(const MouseJoint&) { return JointRows::all; }
 
 } // namespace
 
@@ -138,26 +145,24 @@ void buildJointGroups(WorldState& w) {
     const bool b = joint.solved && dynamicIndex(f.indexB, f.mB);
     g.jointGroup[j] = a ? findRoot(g.parent, f.indexA) : (b ? findRoot(g.parent, f.indexB) : JointGroups::noGroup);
   }
-  // What each group holds: 1 for a slider (prismatic or wheel joint), 2 for a row that does
-  // work (a motor, a spring, a soft weld, the motor and mouse joints, or any joint to a
-  // kinematic body, which moves as it is told): see warmStartJoints.
-  g.kind.resize(n);
+  // Which rows of each joint may do work (all of a joint to a kinematic body, which moves as it is
+  // told, or outside any group), and which groups hold a slider (a prismatic or wheel joint).
+  g.workingRows.resize(w.joints.size());
+  g.slider.resize(n);
   for (const std::uint32_t group : g.memberGroup) {
-    g.kind[group] = 0;
+    g.slider[group] = 0;
   }
   for (std::size_t j = 0; j < w.joints.size(); ++j) {
     const Joint& joint = w.joints[j];
-    if (g.jointGroup[j] == JointGroups::noGroup) {
-      continue;
-    }
     const JointFrame& f = joint.frame;
     const bool kinematic = (f.indexA < n && f.mA == 0.0f) || (f.indexB < n && f.mB == 0.0f);
-    const bool slider = joint.type() == JointType::prismatic || joint.type() == JointType::wheel;
-    std::uint8_t& kind = g.kind[g.jointGroup[j]];
-    kind |= static_cast<std::uint8_t>(
-        (slider ? JointGroups::slider : 0) |
-        (kinematic || std::visit([](const auto& data) { return doesWork(data); }, joint.data) ? JointGroups::working
-                                                                                              : 0));
+    const bool grouped = g.jointGroup[j] != JointGroups::noGroup;
+    g.workingRows[j] = kinematic || !grouped
+                           ? JointRows::all
+                           : std::visit([](const auto& data) { return workingRowsOf(data); }, joint.data);
+    if (grouped && (joint.type() == JointType::prismatic || joint.type() == JointType::wheel)) {
+      g.slider[g.jointGroup[j]] = 1;
+    }
   }
   g.before.resize(g.members.size());
   g.slope.resize(n);
@@ -168,22 +173,24 @@ void buildJointGroups(WorldState& w) {
 
 namespace {
 
-/// The most kinetic energy a jointed group's warm start may add, as a share of the group's
-/// kinetic energy before it: a joint turning omega h rad a substep has a centripetal pull whose
-/// warm start adds (omega h)^2 of it (the relax pass has already turned the velocities along the
-/// joint at the substep's end, so J v = 0 when the warm start comes): 0.25 at half a radian a
-/// substep, the fastest whirls the soak makes (fix 10; the position correction has had their
-/// errors from 0.2 rad a substep on, positionShare). Without it a
+/// The most kinetic energy the warm start of a jointed group's passive rows may add, as a share
+/// of the group's kinetic energy before it: a joint turning omega h rad a substep has a
+/// centripetal pull whose warm start adds (omega h)^2 of it (the relax pass has already turned
+/// the velocities along the joint at the substep's end, so J v = 0 when the warm start comes):
+/// 0.25 at half a radian a substep, the fastest whirls the soak makes (fix 10; the position
+/// correction has had their errors from 0.2 rad a substep on, positionShare). Without it a
 /// swinging cloth of 10,000 pinned discs (the `joint_grid` benchmark) stretched 0.66 m, with it
 /// 0.17. Not for a group holding a prismatic or wheel joint: their line-and-angle rows lock the
 /// bodies' relative turning, and a chain of them between bodies of little inertia is a block
 /// one Gauss-Seidel pass does not converge, so that whatever its warm start adds stays (the
 /// soak: two sliders between a 1.3 kg disc and bodies of 1.7 and 60 kg gained 1.3% of their
-/// energy scale in half a second with 5% allowed a substep). Those keep no energy gain at all.
+/// energy scale in half a second with 5% allowed a substep). Those keep no energy gain at all
+/// (and need nothing more: the 0.8 warm-start factor the prismatic and wheel joints had for
+/// such chains, soak fixes 11 and 13, went with fix 18).
 constexpr double maxWarmStartGain = 0.25;
 
-/// The share (0 to 1) of a jointed group's warm start to keep: the whole of it unless it adds
-/// more kinetic energy than `allowed` (J), else as much as adds that. Along the warm start's
+/// The share (0 to 1) of a jointed group's passive warm start to keep: the whole of it unless it
+/// adds more kinetic energy than `allowed` (J), else as much as adds that. Along the warm start's
 /// direction the energy is E(s) = E0 + s slope + s^2 curvature / 2.
 ///
 /// The warm start re-applies the last substep's impulses as a guess of this one's. Where the
@@ -199,7 +206,11 @@ constexpr double maxWarmStartGain = 0.25;
 /// apart, cancelling on the shared disc, until one warm start spun it past 10^5 rad/s
 /// (docs/reliability.md, "Soak", fixes 11, 13 and 15). The test is over a group, not each joint:
 /// a hanging chain's links all fall together under gravity, so no one joint's guess takes
-/// energy out alone (each link's J v is zero), only all of them together.
+/// energy out alone (each link's J v is zero), only all of them together. And over the passive
+/// rows only, the rows that may do work (motors, springs) applied whole before them: a motor
+/// hoisting a chain adds energy by right, but a spring in a group once spared the group's rigid
+/// rows too, and a wheel joint on a 1 kg disc of inverse inertia 577 gained 23 times its
+/// group's energy in a substep (fix 18).
 float keptShare(double slope, double curvature, double allowed) {
   if (!(curvature > 0.0) || slope + 0.5 * curvature <= allowed) {
     return 1.0f; // nothing applied, or the whole of it is within the allowance
@@ -216,15 +227,34 @@ float keptShare(double slope, double curvature, double allowed) {
 void warmStartJoints(WorldState& w, const StepContext& context) {
   const std::uint32_t staticIndex = w.staticIndex();
   JointGroups& g = w.jointGroups;
+  // The rows that may do work first, whole: a motor's drive or a spring's push adds energy by
+  // right (trimmed, a crane's motor raised its hook 0.12 m in 5 s instead of 2.5).
+  for (std::size_t j = 0; j < w.joints.size(); ++j) {
+    Joint& joint = w.joints[j];
+    if (joint.solved) {
+      std::visit(
+          [&](auto& data) {
+            beginWarmStart(data);
+            if (g.workingRows[j] != JointRows::none) {
+              warmStartJoint(data, joint.frame, w.states, staticIndex, g.workingRows[j]);
+            }
+          },
+          joint.data);
+    }
+  }
+  // Then the passive rows (rigid rows, limits, friction), along whose direction the energy is
+  // measured.
   for (std::size_t k = 0; k < g.members.size(); ++k) {
     g.before[k] = w.states[g.members[k]];
     g.slope[g.memberGroup[k]] = 0.0;
     g.energy[g.memberGroup[k]] = 0.0;
     g.curvature[g.memberGroup[k]] = 0.0;
   }
-  for (Joint& joint : w.joints) {
-    if (joint.solved) {
-      std::visit([&](auto& data) { warmStartJoint(data, joint.frame, w.states, staticIndex); }, joint.data);
+  for (std::size_t j = 0; j < w.joints.size(); ++j) {
+    Joint& joint = w.joints[j];
+    if (joint.solved && g.workingRows[j] != JointRows::all) {
+      std::visit([&](auto& data) { warmStartJoint(data, joint.frame, w.states, staticIndex, JointRows::passive); },
+                 joint.data);
     }
   }
   for (std::size_t k = 0; k < g.members.size(); ++k) {
@@ -243,11 +273,7 @@ void warmStartJoints(WorldState& w, const StepContext& context) {
   }
   for (std::size_t k = 0; k < g.members.size(); ++k) {
     const std::uint32_t group = g.memberGroup[k];
-    if ((g.kind[group] & JointGroups::working) != 0) {
-      g.share[group] = 1.0f;
-      continue;
-    }
-    const double allowed = (g.kind[group] & JointGroups::slider) != 0 ? 0.0 : maxWarmStartGain * g.energy[group];
+    const double allowed = g.slider[group] != 0 ? 0.0 : maxWarmStartGain * g.energy[group];
     const float share = g.share[group] = keptShare(g.slope[group], g.curvature[group], allowed);
     if (share < 1.0f) {
       const BodyState& s0 = g.before[k];
@@ -262,8 +288,8 @@ void warmStartJoints(WorldState& w, const StepContext& context) {
       continue;
     }
     const std::uint32_t group = g.jointGroup[j];
-    if (group != JointGroups::noGroup && g.share[group] < 1.0f) {
-      std::visit([&](auto& data) { scaleImpulses(data, g.share[group]); }, joint.data);
+    if (group != JointGroups::noGroup && g.share[group] < 1.0f && g.workingRows[j] != JointRows::all) {
+      std::visit([&](auto& data) { scaleImpulses(data, g.share[group], JointRows::passive); }, joint.data);
     }
     // Held to the speed limits only now: the warm starts of joints sharing a body may cancel on
     // it, and a clamp between them would break that (soak fix 5); the trim needs them unclamped

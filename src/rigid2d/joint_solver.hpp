@@ -35,6 +35,19 @@ struct JointFrame {
   Vec2f centerB;                        ///< B's centre of mass at the step's start, world, m (the mouse joint)
 };
 
+[[nodiscard]] constexpr bool includes(JointRows rows, JointRows part) {
+  return (static_cast<unsigned>(rows) & static_cast<unsigned>(part)) != 0;
+}
+
+/// `impulse` where `rows` includes `part`, else 0 (exactly: with every row picked, a sum of
+/// picks rounds as the plain sum).
+[[nodiscard]] constexpr float pick(JointRows rows, JointRows part, float impulse) {
+  return includes(rows, part) ? impulse : 0.0f;
+}
+
+/// What a joint does before its warm start (beginWarmStart): nothing, unless its type says so.
+template <class JointData> void beginWarmStart(JointData&) {}
+
 /// The angle of qB relative to qA, in (-pi, pi].
 [[nodiscard]] inline float relativeAngle(const Rot2f& qB, const Rot2f& qA) {
   const Rot2f q = invMul(qA, qB);
@@ -102,19 +115,6 @@ inline void storePose(std::vector<BodyState>& states, std::uint32_t index, std::
 inline void turnBy(BodyState& s, float angle) {
   s.dq = normalize(Rot2f{s.dq.c - angle * s.dq.s, s.dq.s + angle * s.dq.c});
 }
-
-/// The share of their accumulated impulses the prismatic and wheel joints warm start with
-/// (Bullet's warmstartingFactor, 0.85, does so for every constraint). Their line-and-angle rows
-/// lock the bodies' relative turning, and chains of them between bodies of tiny inertia do not
-/// converge in a Gauss-Seidel pass: accumulated impulses drift apart, cancelling on a shared
-/// body, until one warm start spins it past 10^5 rad/s (soak fixes 11 and 13). Let go, that drift
-/// decays as 0.8^n; a lone slider's solve is exact and needs no warm start. The trimming of a
-/// passive group's warm start (warmStartJoints, joint.cpp) covers most such chains, but not a
-/// group with a motor or a spring (a wheel's suspension), which keeps its warm start whole: a
-/// body the game teleported 50 m from its slider partner, a wheel joint on the other side, set
-/// the three flailing at 300 m/s for 25 s until one went through the floor (the sliders'
-/// one-hour soak, seed 7, episode 18,288).
-constexpr float sliderWarmStartFactor = 0.8f;
 
 /// The effective mass matrix of a point constraint at anchors rA, rB (the 2x2 K with
 /// K v = relative velocity change per unit impulse).

@@ -40,8 +40,9 @@ struct Joint {
 void prepareJoints(WorldState& w, const StepContext& context);
 /// The jointed groups (JointGroups) of the joints prepared this step; called by prepareJoints.
 void buildJointGroups(WorldState& w);
-/// Every joint's warm start, after the contacts'; each passive jointed group's trimmed so as to
-/// add at most a quarter of its kinetic energy (none with a slider), joint.cpp.
+/// Every joint's warm start, after the contacts': first the rows that may do work (motors,
+/// springs), whole, then the passive rest, trimmed in each jointed group so as to add at most a
+/// quarter of the group's kinetic energy (none with a slider in it), joint.cpp.
 void warmStartJoints(WorldState& w, const StepContext& context);
 void solveJoints(WorldState& w, const StepContext& context, bool useBias);
 /// Joint errors corrected on positions only (after the relax pass).

@@ -50,7 +50,10 @@ void prepareJoint(MotorJoint& joint, const JointFrame& frame, const StepContext&
 }
 
 void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex) {
+                    std::uint32_t staticIndex, JointRows rows) {
+  if (!includes(rows, JointRows::working)) {
+    return;
+  }
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   applyImpulses(a, b, frame, currentAnchor(a, joint.targetA), currentAnchor(b, joint.originB), joint.linearImpulse,

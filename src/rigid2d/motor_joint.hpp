@@ -23,13 +23,18 @@ struct MotorJoint {
 };
 
 void prepareJoint(MotorJoint& joint, const JointFrame& frame, const StepContext& context);
-/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
-inline void scaleImpulses(MotorJoint& joint, float scale) {
+/// Scales the accumulated impulses of `rows` (what the warm start applied): warmStartJoints' line
+/// search. Every row of the joint may do work (it drives B toward a target).
+inline void scaleImpulses(MotorJoint& joint, float scale, JointRows rows) {
+  if (!includes(rows, JointRows::working)) {
+    return;
+  }
   joint.linearImpulse = joint.linearImpulse * scale;
   joint.angularImpulse = joint.angularImpulse * scale;
 }
+/// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex);
+                    std::uint32_t staticIndex, JointRows rows);
 void solveJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).

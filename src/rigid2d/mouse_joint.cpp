@@ -31,7 +31,10 @@ void prepareJoint(MouseJoint& joint, const JointFrame& frame, const StepContext&
 }
 
 void warmStartJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex) {
+                    std::uint32_t staticIndex, JointRows rows) {
+  if (!includes(rows, JointRows::working)) {
+    return;
+  }
   BodyState b = states[frame.indexB];
   const Vec2f rB = currentAnchor(b, frame.frameB);
   b.v += joint.linearImpulse * frame.mB;

@@ -182,14 +182,21 @@ void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const StepCont
 }
 
 void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex) {
+                    std::uint32_t staticIndex, JointRows rows) {
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
-  scaleImpulses(joint, sliderWarmStartFactor);
-  joint.torqueOnA = 0.0f;
-  joint.torqueOnB = 0.0f;
-  applySlider(joint, g, frame, a, b, accumulatedAxial(joint), joint.impulse.x, joint.impulse.y);
+  constexpr JointRows working = JointRows::working;
+  constexpr JointRows passive = JointRows::passive;
+  const float axial = pick(rows, working, joint.springImpulse) + pick(rows, working, joint.motorImpulse) +
+                      pick(rows, passive, joint.lowerImpulse) - pick(rows, passive, joint.upperImpulse);
+  const float torqueA = joint.torqueOnA;
+  const float torqueB = joint.torqueOnB;
+  applySlider(joint, g, frame, a, b, axial, pick(rows, passive, joint.impulse.x), pick(rows, passive, joint.impulse.y));
+  if (rows == passive) {
+    joint.passiveTorqueOnA = joint.torqueOnA - torqueA;
+    joint.passiveTorqueOnB = joint.torqueOnB - torqueB;
+  }
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
 }

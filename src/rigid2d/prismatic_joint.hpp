@@ -19,6 +19,9 @@ struct PrismaticJoint {
   /// impulse on (correctJointPosition, which ends every substep).
   float torqueOnA = 0.0f;
   float torqueOnB = 0.0f;
+  /// Their part from the passive rows' warm start (N m s): what trimming it takes off them.
+  float passiveTorqueOnA = 0.0f;
+  float passiveTorqueOnB = 0.0f;
   float positionShare = 0.0f; ///< of the block's error corrected on positions this substep (positionShare)
   // This step's constants.
   Vec2f axisA;            ///< the axis in world axes at the step's start
@@ -67,18 +70,30 @@ void solveTranslationLimit(float& accumulated, float c, float direction, const S
                            BodyState& a, BodyState& b, float axialMass, const StepContext& context, bool useBias);
 
 void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const StepContext& context);
-/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
-inline void scaleImpulses(PrismaticJoint& joint, float scale) {
-  joint.impulse = joint.impulse * scale;
-  joint.springImpulse = joint.springImpulse * scale;
-  joint.motorImpulse = joint.motorImpulse * scale;
-  joint.lowerImpulse = joint.lowerImpulse * scale;
-  joint.upperImpulse = joint.upperImpulse * scale;
-  joint.torqueOnA = joint.torqueOnA * scale;
-  joint.torqueOnB = joint.torqueOnB * scale;
+/// Scales the accumulated impulses of `rows` (what the warm start applied) and their moments in
+/// the tally: warmStartJoints' line search. The spring and motor may do work; the line-and-angle
+/// block and the limits are passive.
+inline void scaleImpulses(PrismaticJoint& joint, float scale, JointRows rows) {
+  if (includes(rows, JointRows::passive)) {
+    joint.impulse = joint.impulse * scale;
+    joint.lowerImpulse = joint.lowerImpulse * scale;
+    joint.upperImpulse = joint.upperImpulse * scale;
+    joint.torqueOnA -= (1.0f - scale) * joint.passiveTorqueOnA;
+    joint.torqueOnB -= (1.0f - scale) * joint.passiveTorqueOnB;
+  }
+  if (includes(rows, JointRows::working)) {
+    joint.springImpulse = joint.springImpulse * scale;
+    joint.motorImpulse = joint.motorImpulse * scale;
+  }
 }
+/// Starts the substep's tally of moments, before the warm start.
+inline void beginWarmStart(PrismaticJoint& joint) {
+  joint.torqueOnA = joint.torqueOnB = 0.0f;
+  joint.passiveTorqueOnA = joint.passiveTorqueOnB = 0.0f;
+}
+/// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex);
+                    std::uint32_t staticIndex, JointRows rows);
 void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
 /// The block's error corrected on positions, after the relax pass (positionShare).

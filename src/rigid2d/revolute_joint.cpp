@@ -48,14 +48,17 @@ void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepConte
 }
 
 void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex) {
+                    std::uint32_t staticIndex, JointRows rows) {
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const Vec2f rA = currentAnchor(a, frame.frameA);
   const Vec2f rB = currentAnchor(b, frame.frameB);
-  const float axial =
-      joint.springImpulse + joint.motorImpulse + joint.frictionImpulse + joint.lowerImpulse - joint.upperImpulse;
-  const Vec2f p = joint.linearImpulse;
+  constexpr JointRows working = JointRows::working;
+  constexpr JointRows passive = JointRows::passive;
+  const float axial = pick(rows, working, joint.springImpulse) + pick(rows, working, joint.motorImpulse) +
+                      pick(rows, passive, joint.frictionImpulse) + pick(rows, passive, joint.lowerImpulse) -
+                      pick(rows, passive, joint.upperImpulse);
+  const Vec2f p = includes(rows, passive) ? joint.linearImpulse : Vec2f{};
   a.v -= p * frame.mA;
   a.w -= frame.iA * (cross(rA, p) + axial);
   b.v += p * frame.mB;

@@ -23,17 +23,23 @@ struct RevoluteJoint {
 };
 
 void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepContext& context);
-/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
-inline void scaleImpulses(RevoluteJoint& joint, float scale) {
-  joint.linearImpulse = joint.linearImpulse * scale;
-  joint.springImpulse = joint.springImpulse * scale;
-  joint.motorImpulse = joint.motorImpulse * scale;
-  joint.lowerImpulse = joint.lowerImpulse * scale;
-  joint.upperImpulse = joint.upperImpulse * scale;
-  joint.frictionImpulse = joint.frictionImpulse * scale;
+/// Scales the accumulated impulses of `rows` (what the warm start applied): warmStartJoints'
+/// line search. The spring and motor may do work; the pin, limits and friction are passive.
+inline void scaleImpulses(RevoluteJoint& joint, float scale, JointRows rows) {
+  if (includes(rows, JointRows::passive)) {
+    joint.linearImpulse = joint.linearImpulse * scale;
+    joint.lowerImpulse = joint.lowerImpulse * scale;
+    joint.upperImpulse = joint.upperImpulse * scale;
+    joint.frictionImpulse = joint.frictionImpulse * scale;
+  }
+  if (includes(rows, JointRows::working)) {
+    joint.springImpulse = joint.springImpulse * scale;
+    joint.motorImpulse = joint.motorImpulse * scale;
+  }
 }
+/// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex);
+                    std::uint32_t staticIndex, JointRows rows);
 void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).

@@ -28,16 +28,17 @@ void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& 
 }
 
 void warmStartJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex) {
+                    std::uint32_t staticIndex, JointRows rows) {
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const Vec2f rA = currentAnchor(a, frame.frameA);
   const Vec2f rB = currentAnchor(b, frame.frameB);
-  const Vec2f p = joint.linearImpulse;
+  const Vec2f p = includes(rows, linearRows(joint)) ? joint.linearImpulse : Vec2f{};
+  const float angular = pick(rows, angularRows(joint), joint.angularImpulse);
   a.v -= p * frame.mA;
-  a.w -= frame.iA * (cross(rA, p) + joint.angularImpulse);
+  a.w -= frame.iA * (cross(rA, p) + angular);
   b.v += p * frame.mB;
-  b.w += frame.iB * (cross(rB, p) + joint.angularImpulse);
+  b.w += frame.iB * (cross(rB, p) + angular);
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
 }

@@ -20,13 +20,27 @@ struct WeldJoint {
 };
 
 void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& context);
-/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
-inline void scaleImpulses(WeldJoint& joint, float scale) {
-  joint.linearImpulse = joint.linearImpulse * scale;
-  joint.angularImpulse = joint.angularImpulse * scale;
+/// The rows of the linear and the angular impulse: soft ones (a spring) may do work, rigid ones are
+/// passive.
+[[nodiscard]] inline JointRows linearRows(const WeldJoint& joint) {
+  return joint.def.linearHertz > 0.0f ? JointRows::working : JointRows::passive;
 }
+[[nodiscard]] inline JointRows angularRows(const WeldJoint& joint) {
+  return joint.def.angularHertz > 0.0f ? JointRows::working : JointRows::passive;
+}
+/// Scales the accumulated impulses of `rows` (what the warm start applied): warmStartJoints'
+/// line search.
+inline void scaleImpulses(WeldJoint& joint, float scale, JointRows rows) {
+  if (includes(rows, linearRows(joint))) {
+    joint.linearImpulse = joint.linearImpulse * scale;
+  }
+  if (includes(rows, angularRows(joint))) {
+    joint.angularImpulse = joint.angularImpulse * scale;
+  }
+}
+/// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex);
+                    std::uint32_t staticIndex, JointRows rows);
 void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate). The

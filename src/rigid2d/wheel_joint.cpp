@@ -25,17 +25,21 @@ void prepareJoint(WheelJoint& joint, const JointFrame& frame, const StepContext&
 }
 
 void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex) {
+                    std::uint32_t staticIndex, JointRows rows) {
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
-  scaleImpulses(joint, sliderWarmStartFactor);
-  const float axial = joint.springImpulse + joint.lowerImpulse - joint.upperImpulse;
-  const Vec2f p = g.axis * axial + g.normal * joint.perpImpulse;
+  constexpr JointRows working = JointRows::working;
+  constexpr JointRows passive = JointRows::passive;
+  const float axial = pick(rows, working, joint.springImpulse) + pick(rows, passive, joint.lowerImpulse) -
+                      pick(rows, passive, joint.upperImpulse);
+  const float perp = pick(rows, passive, joint.perpImpulse);
+  const float motor = pick(rows, working, joint.motorImpulse);
+  const Vec2f p = g.axis * axial + g.normal * perp;
   a.v -= p * frame.mA;
-  a.w -= frame.iA * (axial * g.a1 + joint.perpImpulse * g.s1 + joint.motorImpulse);
+  a.w -= frame.iA * (axial * g.a1 + perp * g.s1 + motor);
   b.v += p * frame.mB;
-  b.w += frame.iB * (axial * g.a2 + joint.perpImpulse * g.s2 + joint.motorImpulse);
+  b.w += frame.iB * (axial * g.a2 + perp * g.s2 + motor);
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
 }

@@ -27,16 +27,22 @@ struct WheelJoint {
 };
 
 void prepareJoint(WheelJoint& joint, const JointFrame& frame, const StepContext& context);
-/// Scales the accumulated impulses (what the warm start applied): warmStartJoints' line search.
-inline void scaleImpulses(WheelJoint& joint, float scale) {
-  joint.perpImpulse = joint.perpImpulse * scale;
-  joint.springImpulse = joint.springImpulse * scale;
-  joint.motorImpulse = joint.motorImpulse * scale;
-  joint.lowerImpulse = joint.lowerImpulse * scale;
-  joint.upperImpulse = joint.upperImpulse * scale;
+/// Scales the accumulated impulses of `rows` (what the warm start applied): warmStartJoints'
+/// line search. The suspension spring and the motor may do work; the line and limits are passive.
+inline void scaleImpulses(WheelJoint& joint, float scale, JointRows rows) {
+  if (includes(rows, JointRows::passive)) {
+    joint.perpImpulse = joint.perpImpulse * scale;
+    joint.lowerImpulse = joint.lowerImpulse * scale;
+    joint.upperImpulse = joint.upperImpulse * scale;
+  }
+  if (includes(rows, JointRows::working)) {
+    joint.springImpulse = joint.springImpulse * scale;
+    joint.motorImpulse = joint.motorImpulse * scale;
+  }
 }
+/// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex);
+                    std::uint32_t staticIndex, JointRows rows);
 void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).

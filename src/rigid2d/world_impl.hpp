@@ -180,25 +180,30 @@ inline std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t 
   return i;
 }
 
+/// A joint's rows as its warm start applies them (warmStartJoints, joint.cpp): those that may do
+/// work on the bodies (motors, springs and other soft rows, which drive them or give back stored
+/// energy) and the passive rest (rigid rows, limits, friction), which only redirect or take
+/// kinetic energy. Every row of a joint to a kinematic body may do work (the body moves as told).
+enum class JointRows : std::uint8_t { none = 0, working = 1, passive = 2, all = 3 };
+
 /// The jointed groups of a step: dynamic bodies joined through joints (not through static or
 /// kinematic bodies, which nothing moves), for the joints' warm start (joint.cpp). Scratch,
 /// rebuilt each step.
 struct JointGroups {
   static constexpr std::uint32_t noGroup = 0xffffffffu;
-  std::vector<std::uint32_t> parent;         ///< union-find by solver index
-  std::vector<std::uint8_t> isMember;        ///< by solver index
-  std::vector<std::uint32_t> members;        ///< solver indices of the dynamic bodies in joints
-  std::vector<std::uint32_t> memberGroup;    ///< each member's group: its root's solver index
-  std::vector<std::uint32_t> jointGroup;     ///< by joint slot: its group, or noGroup (asleep, or no dynamic body)
-  std::vector<float> memberMass;             ///< kg
-  std::vector<float> memberInertia;          ///< kg m^2 (0: fixed rotation)
-  std::vector<BodyState> before;             ///< the members' velocities before the warm start
-  std::vector<double> slope, curvature;      ///< by group: the warm start's line search (J, J)
-  std::vector<double> energy;                ///< by group: the kinetic energy before the warm start, J
-  static constexpr std::uint8_t slider = 1;  ///< kind: holds a prismatic or wheel joint
-  static constexpr std::uint8_t working = 2; ///< kind: holds a row that does work (joint.cpp)
-  std::vector<std::uint8_t> kind;            ///< by group: slider | working
-  std::vector<float> share;                  ///< by group: the share of the warm start kept
+  std::vector<std::uint32_t> parent;      ///< union-find by solver index
+  std::vector<std::uint8_t> isMember;     ///< by solver index
+  std::vector<std::uint32_t> members;     ///< solver indices of the dynamic bodies in joints
+  std::vector<std::uint32_t> memberGroup; ///< each member's group: its root's solver index
+  std::vector<std::uint32_t> jointGroup;  ///< by joint slot: its group, or noGroup (asleep, or no dynamic body)
+  std::vector<JointRows> workingRows;     ///< by joint slot: the rows that may do work (none, working or all)
+  std::vector<float> memberMass;          ///< kg
+  std::vector<float> memberInertia;       ///< kg m^2 (0: fixed rotation)
+  std::vector<BodyState> before;          ///< the members' velocities before the passive rows' warm start
+  std::vector<double> slope, curvature;   ///< by group: the passive rows' warm start's line search (J, J)
+  std::vector<double> energy;             ///< by group: the kinetic energy before the passive rows' warm start, J
+  std::vector<std::uint8_t> slider;       ///< by group: 1 if it holds a prismatic or wheel joint
+  std::vector<float> share;               ///< by group: the share of the passive rows' warm start kept
 };
 
 struct ContactSolverData; // contact_solver.cpp

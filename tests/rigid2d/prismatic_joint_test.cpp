@@ -325,11 +325,12 @@ TEST(PrismaticJoint2D, a_motor_hoists_a_hanging_chain_at_its_speed) {
   // A crane: a 0.16 kg hook on a vertical slider driven up at 0.5 m/s (up to 100 kN), ten 0.5 m,
   // 1 kg links hanging from it on pins and a 10 kg load as the last link. The motor's row sees
   // only the hook; the chain's weight reaches it through the pins, which one Gauss-Seidel pass
-  // a substep carries only with the warm start. The motor does work, so its group's warm start
-  // is kept whole (trimmed as if it were a passive chain's, the hook rose 0.12 m in 5 s instead
-  // of 2.5: warmStartJoints, src/rigid2d/joint.cpp). Reference: the motor's speed times the
-  // time, within the chain's stretch; the pins open by a few centimetres in all (one pass a
-  // substep over 11 pins carrying 19 kg).
+  // a substep carries only with the warm start. The motor does work, so its row's warm start
+  // is applied whole, before the pins' is measured and trimmed (trimmed as if it were a
+  // passive chain's, the hook rose 0.12 m in 5 s instead of 2.5: warmStartJoints,
+  // src/rigid2d/joint.cpp). Reference: the motor's speed times the time, within the chain's
+  // stretch; the pins open by a few centimetres in all (one pass a substep over 11 pins
+  // carrying 19 kg).
   World world;
   const BodyId ground = world.createBody({});
   BodyDef def;
