@@ -185,8 +185,7 @@ namespace {
 /// one Gauss-Seidel pass does not converge, so that whatever its warm start adds stays (the
 /// soak: two sliders between a 1.3 kg disc and bodies of 1.7 and 60 kg gained 1.3% of their
 /// energy scale in half a second with 5% allowed a substep). Those keep no energy gain at all
-/// (and need nothing more: the 0.8 warm-start factor the prismatic and wheel joints had for
-/// such chains, soak fixes 11 and 13, went with fix 18).
+/// (and their joints warm start with 0.8 of their impulses: sliderWarmStartFactor).
 constexpr double maxWarmStartGain = 0.25;
 
 /// The share (0 to 1) of a jointed group's passive warm start to keep: the whole of it unless it

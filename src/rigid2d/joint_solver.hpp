@@ -116,6 +116,19 @@ inline void turnBy(BodyState& s, float angle) {
   s.dq = normalize(Rot2f{s.dq.c - angle * s.dq.s, s.dq.s + angle * s.dq.c});
 }
 
+/// The share of their accumulated impulses the prismatic and wheel joints warm start with
+/// (Bullet's warmstartingFactor, 0.85, does so for every constraint). Their line-and-angle rows
+/// lock the bodies' relative turning, and chains of them between bodies of tiny inertia do not
+/// converge in a Gauss-Seidel pass: accumulated impulses drift apart, cancelling on a shared
+/// body, until one warm start spins it past 10^5 rad/s (soak fixes 11 and 13). Let go, that drift
+/// decays as 0.8^n; a lone slider's solve is exact and needs no warm start. The trim of each
+/// group's passive warm start (warmStartJoints, joint.cpp) keeps a group from gaining energy
+/// by it, but not a pair from swinging: dropped with fix 18, a 46 kg, 2 cm disc carrying a
+/// wheel joint's line, its wheel 54 m out along it, spun at 10^5 rad/s within a step and flung
+/// the wheel at the 400 m/s clamp through the floor (seed 41, episode 8,801, under a first
+/// version of soak fix 19); with it, it holds.
+constexpr float sliderWarmStartFactor = 0.8f;
+
 /// The effective mass matrix of a point constraint at anchors rA, rB (the 2x2 K with
 /// K v = relative velocity change per unit impulse).
 [[nodiscard]] inline Mat22f pointMass(const JointFrame& f, const Vec2f& rA, const Vec2f& rB) {

@@ -86,8 +86,10 @@ inline void scaleImpulses(PrismaticJoint& joint, float scale, JointRows rows) {
     joint.motorImpulse = joint.motorImpulse * scale;
   }
 }
-/// Starts the substep's tally of moments, before the warm start.
+/// Lets go of part of the accumulated impulses before the warm start (sliderWarmStartFactor) and
+/// starts the substep's tally of moments.
 inline void beginWarmStart(PrismaticJoint& joint) {
+  scaleImpulses(joint, sliderWarmStartFactor, JointRows::all);
   joint.torqueOnA = joint.torqueOnB = 0.0f;
   joint.passiveTorqueOnA = joint.passiveTorqueOnB = 0.0f;
 }

@@ -40,6 +40,8 @@ inline void scaleImpulses(WheelJoint& joint, float scale, JointRows rows) {
     joint.motorImpulse = joint.motorImpulse * scale;
   }
 }
+/// Lets go of part of the accumulated impulses before the warm start (sliderWarmStartFactor).
+inline void beginWarmStart(WheelJoint& joint) { scaleImpulses(joint, sliderWarmStartFactor, JointRows::all); }
 /// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex, JointRows rows);

@@ -464,6 +464,39 @@ BodyId movingDisc(World& world, const Vec2f& at, float angle, const Vec2f& v, fl
   return body;
 }
 
+TEST(SoakRegression2D, a_light_plank_struck_into_the_floor_keeps_its_centre_out) {
+  // The one-hour soak without sliders, seed 12, episode 17,008: an 80 kg, 17 cm body falling at
+  // 162 m/s struck a 0.76 kg, 8 m polygon lying on the floor and drove it down 2.5 m in one
+  // step, then 1.5 m the next: less than the polygon's core radius (1.9 m), so its centre was
+  // not swept, and it went 0.8 m into the 5 m floor and on, out of the underside. Bodies moving
+  // more than half their core radius a step now have their centre swept (a circle of a quarter
+  // of the core against the static shapes, as before): the centre stops that far short of the
+  // floor, and what the heavy body then presses in stays within it. Here 0.76 kg planks 6 and
+  // 8 m long (core radius 0.75 and 1 m) struck by 80 kg discs at 100 to 200 m/s: their centres
+  // went up to 0.83 m into the floor before; the reference is the floor's face, less a quarter
+  // of the plank's core.
+  for (const float halfLength : {3.0f, 4.0f}) {
+    for (const float speed : {100.0f, 160.0f, 200.0f}) {
+      World world;
+      const BodyId floor = world.createBody({});
+      world.createShape(floor, {}, makeOffsetBox(50.0f, 2.5f, {0.0f, -2.5f}, 0.0f));
+      const float halfHeight = 0.5f * halfLength;
+      const BodyId plank = movingBody(world, {0.0f, halfHeight}, 0.0f, {}, 0.0f);
+      ShapeDef plankShape;
+      plankShape.density = 0.76f / (4.0f * halfLength * halfHeight);
+      world.createShape(plank, plankShape, makeBox(halfLength, halfHeight));
+      const BodyId heavy = movingDisc(world, {0.3f, halfLength + 3.0f}, 0.0f, {0.0f, -speed}, 0.0f, 80.0f, 0.17f);
+      float lowest = halfHeight;
+      for (int i = 0; i < 120; ++i) {
+        world.step(dt);
+        lowest = std::min(lowest, world.worldCenterOfMass(plank).y);
+      }
+      EXPECT_GT(lowest, -0.25f * halfHeight) << halfLength << " m, " << speed << " m/s";
+      EXPECT_GT(world.worldCenterOfMass(heavy).y, 0.0f);
+    }
+  }
+}
+
 /// The soak's chains of three: `first` pinned at world point `pin` to `middle`, which carries a
 /// slider (+-1 m of travel along its turned x axis, with a spring of `springHertz` toward its
 /// start unless 0) at world point `slide` to `last`; the joints start at rest (reference angles
