@@ -35,6 +35,7 @@ struct JointFrame {
   Vec2f centerB;                        ///< B's centre of mass at the step's start, world, m (the mouse joint)
 };
 
+/// Whether `rows` takes in the rows of `part` (JointRows::working or JointRows::passive).
 [[nodiscard]] constexpr bool includes(JointRows rows, JointRows part) {
   return (static_cast<unsigned>(rows) & static_cast<unsigned>(part)) != 0;
 }
