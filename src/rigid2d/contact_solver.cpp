@@ -131,6 +131,18 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
   BodyState a = states[c.indexA];
   BodyState b = states[c.indexB];
   const Vec2f dp = b.dp - a.dp;
+  // The approach speed at impact, for restitution: gravity may have sped the bodies up since the
+  // step began (2% of e^2 h in a dropped ball's rebound). Measured at every point before this
+  // pass pushes at any: the first point's impulse turns the body, which would add to the second
+  // point's approach.
+  const bool measureApproach = params.useBias && c.restitution != 0.0f;
+  std::array<float, 2> approach{};
+  if (measureApproach) {
+    for (int k = 0; k < c.pointCount; ++k) {
+      const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+      approach[static_cast<std::size_t>(k)] = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
+    }
+  }
   for (int k = 0; k < c.pointCount; ++k) {
     ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
     // Current separation from the deltas: the anchors turn with their bodies.
@@ -147,10 +159,8 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
       impulseScale = c.softness.impulseScale;
     }
     const float vn = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
-    if (params.useBias && s <= 0.0f) {
-      // The approach speed at impact, for restitution: gravity may have sped the bodies up
-      // since the step began (2% of e^2 h in a dropped ball's rebound).
-      p.relativeVelocity = std::min(p.relativeVelocity, vn);
+    if (measureApproach && s <= 0.0f) {
+      p.relativeVelocity = std::min(p.relativeVelocity, approach[static_cast<std::size_t>(k)]);
     }
     const float impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
     const float total = std::max(p.normalImpulse + impulse, 0.0f);
@@ -180,19 +190,53 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
   }
 }
 
+/// Whether point p bounces: it approached faster than the threshold (m/s) and took an impulse.
+bool bounces(const ConstraintPoint& p, float threshold) {
+  return andW(greaterW(-threshold, p.relativeVelocity), greaterW(p.maxNormalImpulse, 0.0f));
+}
+
+/// The restitution pass of one contact: each bouncing point's normal velocity becomes e times
+/// its approach speed, a two-point manifold's as a block (maxBlockConditionNumber).
 void restitutionOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_t staticIndex, float threshold) {
   if (c.restitution == 0.0f) {
     return;
   }
   BodyState a = states[c.indexA];
   BodyState b = states[c.indexB];
-  for (int k = 0; k < c.pointCount; ++k) {
+  const auto normalVelocity = [&](const ConstraintPoint& p) {
+    return dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
+  };
+  const auto target = [&](const ConstraintPoint& p) { return -(c.restitution * p.relativeVelocity); };
+  bool block = false;
+  if (c.pointCount == 2 && bounces(c.points[0], threshold) && bounces(c.points[1], threshold)) {
+    ConstraintPoint& p1 = c.points[0];
+    ConstraintPoint& p2 = c.points[1];
+    const float rnA1 = cross(p1.rA, c.normal);
+    const float rnA2 = cross(p2.rA, c.normal);
+    const float rnB1 = cross(p1.rB, c.normal);
+    const float rnB2 = cross(p2.rB, c.normal);
+    const float k11 = normalCoupling(c.mA, c.mB, c.iA, c.iB, rnA1, rnA1, rnB1, rnB1);
+    const float k12 = normalCoupling(c.mA, c.mB, c.iA, c.iB, rnA1, rnA2, rnB1, rnB2);
+    const float k22 = normalCoupling(c.mA, c.mB, c.iA, c.iB, rnA2, rnA2, rnB2, rnB2);
+    block = maxBlockConditionNumber * (k11 * k22 - k12 * k12) > k11 * k11;
+    if (block) {
+      float x1 = p1.normalImpulse;
+      float x2 = p2.normalImpulse;
+      solveNormalBlock(k11, k12, k22, normalVelocity(p1), normalVelocity(p2), target(p1), target(p2), 0.0f, x1, x2);
+      const float applied1 = x1 - p1.normalImpulse;
+      const float applied2 = x2 - p2.normalImpulse;
+      p1.normalImpulse = p1.normalImpulse + applied1;
+      p2.normalImpulse = p2.normalImpulse + applied2;
+      applyImpulse(a, b, c, p1, c.normal * applied1);
+      applyImpulse(a, b, c, p2, c.normal * applied2);
+    }
+  }
+  for (int k = 0; k < c.pointCount && !block; ++k) {
     ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-    if (p.relativeVelocity > -threshold || p.maxNormalImpulse == 0.0f) {
+    if (!bounces(p, threshold)) {
       continue;
     }
-    const float vn = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
-    const float impulse = -p.normalMass * (vn + c.restitution * p.relativeVelocity);
+    const float impulse = -p.normalMass * (normalVelocity(p) - target(p));
     const float total = std::max(p.normalImpulse + impulse, 0.0f);
     const float applied = total - p.normalImpulse;
     p.normalImpulse = total;

@@ -46,17 +46,21 @@ inline FloatW zeroW() { return {_mm256_setzero_ps()}; }
 inline FloatW operator+(FloatW a, FloatW b) { return {_mm256_add_ps(a.v, b.v)}; }
 inline FloatW operator-(FloatW a, FloatW b) { return {_mm256_sub_ps(a.v, b.v)}; }
 inline FloatW operator*(FloatW a, FloatW b) { return {_mm256_mul_ps(a.v, b.v)}; }
+inline FloatW operator/(FloatW a, FloatW b) { return {_mm256_div_ps(a.v, b.v)}; }
 inline FloatW operator-(FloatW a) { return {_mm256_sub_ps(_mm256_setzero_ps(), a.v)}; }
 inline FloatW minW(FloatW a, FloatW b) { return {_mm256_min_ps(a.v, b.v)}; }
 inline FloatW maxW(FloatW a, FloatW b) { return {_mm256_max_ps(a.v, b.v)}; }
 inline FloatW greaterW(FloatW a, FloatW b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GT_OQ)}; }
 inline FloatW equalW(FloatW a, FloatW b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_EQ_OQ)}; }
 inline FloatW orW(FloatW a, FloatW b) { return {_mm256_or_ps(a.v, b.v)}; }
+inline FloatW andW(FloatW a, FloatW b) { return {_mm256_and_ps(a.v, b.v)}; }
 inline FloatW selectW(FloatW mask, FloatW ifTrue, FloatW ifFalse) {
   return {_mm256_blendv_ps(ifFalse.v, ifTrue.v, mask.v)};
 }
+/// Whether any lane of a is non-zero (a mask or a value: -0.0 counts as zero). Unordered, as
+/// SSE2's cmpneq: a mask's set lanes are NaN bit patterns.
 inline bool anyNonZeroW(FloatW a) {
-  return _mm256_movemask_ps(_mm256_cmp_ps(a.v, _mm256_setzero_ps(), _CMP_NEQ_OQ)) != 0;
+  return _mm256_movemask_ps(_mm256_cmp_ps(a.v, _mm256_setzero_ps(), _CMP_NEQ_UQ)) != 0;
 }
 
 /// Eight rows of eight floats (one per body) into eight columns (one per field).
@@ -138,6 +142,7 @@ inline void storeW(float* p, FloatW a) { _mm_storeu_ps(p, a.v); }
 inline FloatW operator+(FloatW a, FloatW b) { return {_mm_add_ps(a.v, b.v)}; }
 inline FloatW operator-(FloatW a, FloatW b) { return {_mm_sub_ps(a.v, b.v)}; }
 inline FloatW operator*(FloatW a, FloatW b) { return {_mm_mul_ps(a.v, b.v)}; }
+inline FloatW operator/(FloatW a, FloatW b) { return {_mm_div_ps(a.v, b.v)}; }
 inline FloatW operator-(FloatW a) { return {_mm_sub_ps(_mm_setzero_ps(), a.v)}; }
 inline FloatW minW(FloatW a, FloatW b) { return {_mm_min_ps(a.v, b.v)}; }
 inline FloatW maxW(FloatW a, FloatW b) { return {_mm_max_ps(a.v, b.v)}; }
@@ -145,6 +150,7 @@ inline FloatW maxW(FloatW a, FloatW b) { return {_mm_max_ps(a.v, b.v)}; }
 inline FloatW greaterW(FloatW a, FloatW b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
 inline FloatW equalW(FloatW a, FloatW b) { return {_mm_cmpeq_ps(a.v, b.v)}; }
 inline FloatW orW(FloatW a, FloatW b) { return {_mm_or_ps(a.v, b.v)}; }
+inline FloatW andW(FloatW a, FloatW b) { return {_mm_and_ps(a.v, b.v)}; }
 /// Lanes of `ifTrue` where `mask` is set, of `ifFalse` elsewhere.
 inline FloatW selectW(FloatW mask, FloatW ifTrue, FloatW ifFalse) {
   return {_mm_or_ps(_mm_and_ps(mask.v, ifTrue.v), _mm_andnot_ps(mask.v, ifFalse.v))};
@@ -187,6 +193,9 @@ inline FloatW operator-(FloatW a, FloatW b) {
 inline FloatW operator*(FloatW a, FloatW b) {
   return mapW(a, b, [](float x, float y) { return x * y; });
 }
+inline FloatW operator/(FloatW a, FloatW b) {
+  return mapW(a, b, [](float x, float y) { return x / y; });
+}
 inline FloatW operator-(FloatW a) { return zeroW() - a; }
 inline FloatW minW(FloatW a, FloatW b) {
   return mapW(a, b, [](float x, float y) { return y < x ? y : x; });
@@ -203,6 +212,9 @@ inline FloatW equalW(FloatW a, FloatW b) {
 }
 inline FloatW orW(FloatW a, FloatW b) {
   return mapW(a, b, [](float x, float y) { return (x != 0.0f || y != 0.0f) ? 1.0f : 0.0f; });
+}
+inline FloatW andW(FloatW a, FloatW b) {
+  return mapW(a, b, [](float x, float y) { return (x != 0.0f && y != 0.0f) ? 1.0f : 0.0f; });
 }
 inline FloatW selectW(FloatW mask, FloatW ifTrue, FloatW ifFalse) {
   FloatW r;
