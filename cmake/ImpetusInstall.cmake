@@ -1,10 +1,12 @@
-# `cmake --install` puts headers, the library and impetusConfig.cmake under the prefix, so that
+# `cmake --install` puts headers, the libraries (a static library per layer, and the umbrella
+# impetus::impetus that links them all) and impetusConfig.cmake under the prefix, so that
 # another project can `find_package(impetus REQUIRED)` and link `impetus::impetus`, and, where
 # they were built, the optional impetus::geo and impetus::audio (components "geo" and "audio").
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS impetus EXPORT impetusTargets
+get_property(layer_targets GLOBAL PROPERTY IMPETUS_LAYER_TARGETS)
+install(TARGETS impetus ${layer_targets} EXPORT impetusTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
