@@ -2,6 +2,7 @@
 #include "rigid2d_scenes.hpp"
 
 #include <impetus/error.hpp>
+#include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/manifold.hpp>
 
 #include <algorithm>
@@ -222,7 +223,7 @@ namespace {
 
 /// One ragdoll standing with its feet at `feet`: torso, head, upper and lower arms and legs.
 void addRagdoll(Rigid2dScene& scene, const Vec2f& feet) {
-  constexpr float pi = 3.14159265f;
+  constexpr float pi = impetus::pi<float>;
   const auto part = [&](const Vec2f& center, float hx, float hy) {
     const std::uint32_t b = addBody(scene, BodyType::dynamicBody, feet + center);
     addBox(scene, b, hx, hy);

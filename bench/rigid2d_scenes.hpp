@@ -7,6 +7,7 @@
 // off in both engines (what is timed is the solver at work), steps of 1/60 s.
 #pragma once
 
+#include <impetus/math/scalar.hpp>
 #include <impetus/math/transform2.hpp>
 #include <impetus/rigid2d/world.hpp>
 
@@ -102,7 +103,7 @@ inline constexpr float rainColumnSpacing = 0.6f; ///< m
 /// a dynamic drum with a revolute motor; a kinematic body with an angular velocity is the same
 /// motion without joints (which Impetus does not have yet).
 inline constexpr int tumblerGrid = 45;
-inline constexpr float tumblerSpeed = 25.0f * 3.14159265358979f / 180.0f; ///< rad/s
+inline constexpr float tumblerSpeed = 25.0f * pi<float> / 180.0f; ///< rad/s
 [[nodiscard]] Rigid2dScene tumblerScene(int grid = tumblerGrid);
 
 /// "smash" (after Box2D v3's): in zero gravity, a block of smashGrid x smashGrid boxes of

@@ -4,13 +4,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <impetus/math/scalar.hpp>
 #include <vector>
 
 namespace impetus::samples {
 namespace {
 
 constexpr int circleSegments = 32;
-constexpr float twoPi = 6.28318530718f;
+constexpr float twoPi = 2.0f * pi<float>;
 
 /// Unit circle points, computed once.
 const std::array<Vec2f, circleSegments>& unitCircle() {

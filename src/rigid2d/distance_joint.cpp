@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <impetus/math/scalar.hpp>
 
 namespace impetus::rigid2d::detail {
 namespace {
@@ -93,7 +94,7 @@ SpringCoefficients springCoefficients(float hertz, float dampingRatio, float h) 
   if (hertz <= 0.0f) {
     return {};
   }
-  const float omega = 2.0f * 3.14159265358979f * hertz;
+  const float omega = 2.0f * pi<float> * hertz;
   const float hw = h * omega;
   const float theta = std::clamp((hw - 0.25f) / 0.25f, 0.0f, 1.0f);
   return {h * omega * omega, 2.0f * dampingRatio * hw + theta * hw * hw, std::clamp((hw - 0.5f) / 0.25f, 0.0f, 1.0f)};

@@ -8,6 +8,7 @@
 
 #include "rigid2d/world_impl.hpp"
 
+#include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/joint.hpp>
 
 #include <algorithm>
@@ -57,7 +58,7 @@ template <class JointData> void beginWarmStart(JointData&) {}
 
 /// An angle wrapped into (-pi, pi].
 [[nodiscard]] inline float unwindAngle(float a) {
-  constexpr float pi = 3.14159265358979f;
+  constexpr float pi = impetus::pi<float>;
   if (a < -pi) {
     return a + 2.0f * pi;
   }

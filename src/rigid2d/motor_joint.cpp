@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <impetus/math/scalar.hpp>
 
 namespace impetus::rigid2d::detail {
 namespace {
@@ -40,7 +41,7 @@ void prepareJoint(MotorJoint& joint, const JointFrame& frame, const StepContext&
   const Vec2f originA = -rotate(frame.qA, frame.localCenterA);
   joint.originB = -rotate(frame.qB, frame.localCenterB);
   joint.targetA = originA + rotate(frame.qA, def.linearOffset);
-  constexpr float twoPi = 6.28318530717959f;
+  constexpr float twoPi = 2.0f * pi<float>;
   joint.angleError = std::remainder(frame.deltaAngle - def.angularOffset, twoPi);
   const float k = frame.iA + frame.iB;
   joint.angularMass = k > 0.0f ? 1.0f / k : 0.0f;

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <impetus/math/scalar.hpp>
 
 namespace impetus::rigid2d::detail {
 
@@ -102,7 +103,7 @@ float accumulatedAxial(const PrismaticJoint& joint) {
 /// relative angle's (rad).
 Vec2f blockError(const PrismaticJoint& joint, const JointFrame& f, const SliderGeometry& g, const BodyState& a,
                  const BodyState& b) {
-  constexpr float twoPi = 6.28318530717959f;
+  constexpr float twoPi = 2.0f * pi<float>;
   const float angleError = std::remainder(f.deltaAngle + relativeAngle(b.dq, a.dq) - joint.def.referenceAngle, twoPi);
   return {dot(g.normal, g.d), angleError};
 }

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <impetus/math/scalar.hpp>
 
 namespace impetus::rigid2d::detail {
 namespace {
@@ -39,7 +40,7 @@ void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepConte
   const float k = frame.iA + frame.iB;
   joint.axialMass = k > 0.0f ? 1.0f / k : 0.0f;
   joint.angleAtStart = static_cast<float>(
-      std::remainder(static_cast<double>(frame.deltaAngle) - joint.def.referenceAngle, 2.0 * 3.14159265358979));
+      std::remainder(static_cast<double>(frame.deltaAngle) - joint.def.referenceAngle, 2.0 * pi<double>));
   joint.springSoftness = makeSoft(joint.def.hertz, joint.def.dampingRatio, context.h);
   clearSwitchedOffImpulses(joint);
   if (joint.def.frictionTorque == 0.0f) {

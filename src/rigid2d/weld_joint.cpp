@@ -11,13 +11,14 @@
 #include "rigid2d/weld_joint.hpp"
 
 #include <cmath>
+#include <impetus/math/scalar.hpp>
 
 namespace impetus::rigid2d::detail {
 
 void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& context) {
   const float k = frame.iA + frame.iB;
   joint.axialMass = k > 0.0f ? 1.0f / k : 0.0f;
-  constexpr float twoPi = 6.28318530717959f;
+  constexpr float twoPi = 2.0f * pi<float>;
   joint.startAngle = unwindAngle(std::remainder(frame.deltaAngle - joint.def.referenceAngle, twoPi));
   joint.linearSoftness = joint.def.linearHertz == 0.0f
                              ? context.jointSoftness

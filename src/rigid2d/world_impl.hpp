@@ -7,6 +7,7 @@
 #include <impetus/core/id_pool.hpp>
 #include <impetus/core/task_runner.hpp>
 #include <impetus/error.hpp>
+#include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/chain.hpp>
 #include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/dynamic_tree.hpp>
@@ -311,7 +312,7 @@ struct Softness {
   if (hertz == 0.0f) {
     return {};
   }
-  const float omega = 2.0f * 3.14159265358979f * hertz;
+  const float omega = 2.0f * pi<float> * hertz;
   const float a1 = 2.0f * zeta + h * omega;
   const float a2 = h * omega * a1;
   const float a3 = 1.0f / (1.0f + a2);

@@ -2,6 +2,7 @@
 #include "rigid2d/joints.hpp"
 
 #include <impetus/error.hpp>
+#include <impetus/math/scalar.hpp>
 #include <impetus/math/validate.hpp>
 
 #include <algorithm>
@@ -70,7 +71,7 @@ void validateLimits(float lower, float upper, const char* lowerField, const char
 /// beyond half a turn could never be told apart from their wrap-around.
 void validateRevoluteLimits(float lower, float upper) {
   validateLimits(lower, upper, "lowerAngle", "upperAngle");
-  constexpr float pi = 3.14159265f;
+  constexpr float pi = impetus::pi<float>;
   if (lower < -pi) {
     throwInvalid("lowerAngle", lower, "must be >= -pi");
   }
@@ -297,7 +298,7 @@ float World::revoluteAngle(JointId id) const {
   const auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
   const Joint& j = impl_->joint(id);
   const double angle = detail::relativeAngle(impl_->bodies[j.bodyB].transform.q, impl_->bodies[j.bodyA].transform.q);
-  return static_cast<float>(std::remainder(angle - r.def.referenceAngle, 2.0 * 3.14159265358979));
+  return static_cast<float>(std::remainder(angle - r.def.referenceAngle, 2.0 * pi<double>));
 }
 
 float World::revoluteMotorTorque(JointId id) const {

@@ -11,6 +11,7 @@
 #include <impetus/audio/propagation.hpp>
 #include <impetus/audio/reflection.hpp>
 #include <impetus/audio/waves.hpp>
+#include <impetus/math/scalar.hpp>
 #if IMPETUS_TEST_AUDIO_RENDER
 #include <impetus/audio/openal_renderer.hpp>
 #include <impetus/audio/pass_by_render.hpp>
@@ -146,7 +147,7 @@ TEST(AudioValidation, doppler_binaural_and_pitch) {
   const Vec3d there{100.0, 0.0, 0.0};
   std::vector<float> tone(4410);
   for (std::size_t i = 0; i < tone.size(); ++i) {
-    tone[i] = static_cast<float>(std::sin(2.0 * 3.141592653589793 * 440.0 * static_cast<double>(i) / 44100.0));
+    tone[i] = static_cast<float>(std::sin(2.0 * pi<double> * 440.0 * static_cast<double>(i) / 44100.0));
   }
   expectRejected({
       {"frequency", "0", [] { (void)dopplerFrequency(0.0, 10.0, 0.0); }},

@@ -2,6 +2,7 @@
 // moving fast along it must keep moving (continuous collision once pinned them where they were
 // while gravity wound their velocity up without end), and no velocity may pass the world's
 // speed limits after a step.
+#include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/world.hpp>
 
 #include <gtest/gtest.h>
@@ -69,7 +70,7 @@ TEST(SoakRegression2D, a_small_heavy_ball_slides_down_a_wall_instead_of_sticking
   def.angularVelocity = -126.0f;
   const BodyId ball = world.createBody(def);
   ShapeDef shape;
-  shape.density = 93.0f / (3.14159265f * 0.007f * 0.007f);
+  shape.density = 93.0f / (pi<float> * 0.007f * 0.007f);
   world.createShape(ball, shape, Circle{{}, 0.007f});
   const float fallen = fallAlongWall(world, ball, 30);
   // Free fall: 22.67 * 0.5 + 5 * 0.25 = 12.6 m in half a second; friction may take a little.
@@ -146,7 +147,7 @@ TEST(SoakRegression2D, a_slider_between_a_heavy_pellet_and_a_light_one_loses_ene
   const auto pellet = [&](float mass, const Vec2f& at, const Vec2f& v, float w) {
     const BodyId id = movingBody(world, at, 0.0f, v, w);
     ShapeDef shape;
-    shape.density = mass / (3.14159265f * 0.01f * 0.01f);
+    shape.density = mass / (pi<float> * 0.01f * 0.01f);
     world.createShape(id, shape, Circle{{}, 0.01f});
     return id;
   };
@@ -285,7 +286,7 @@ struct SpinningRail {
     const float x0 = 0.5f; // the bead's centre on the rail, m from the disc's
     disc = movingBody(world, {0.0f, 0.0f}, 0.0f, {}, spin);
     ShapeDef heavy;
-    heavy.density = 4.0f / (3.14159265f * 0.01f * 0.01f);
+    heavy.density = 4.0f / (pi<float> * 0.01f * 0.01f);
     world.createShape(disc, heavy, Circle{{}, 0.01f});
     bead = movingBody(world, {x0, 0.0f}, 0.0f, {}, spin);
     ShapeDef box;
@@ -364,9 +365,9 @@ TEST(SoakRegression2D, a_rod_whirling_half_a_radian_a_substep_does_not_speed_up)
   }()};
   const float spin = 120.0f;
   ShapeDef heavy;
-  heavy.density = 20.0f / (3.14159265f * 0.02f * 0.02f);
+  heavy.density = 20.0f / (pi<float> * 0.02f * 0.02f);
   ShapeDef pellet;
-  pellet.density = 10.0f / (3.14159265f * 0.01f * 0.01f);
+  pellet.density = 10.0f / (pi<float> * 0.01f * 0.01f);
   std::array<BodyId, 2> ends;
   std::array<BodyId, 2> riders;
   for (int i = 0; i < 2; ++i) {
@@ -431,7 +432,7 @@ TEST(SoakRegression2D, a_chain_of_sliders_between_tiny_heavy_discs_does_not_gain
   for (std::size_t i = 0; i < discs.size(); ++i) {
     discs[i] = movingBody(world, {specs[i].x, 0.0f}, specs[i].angle, specs[i].v, specs[i].w);
     ShapeDef dense;
-    dense.density = specs[i].mass / (3.14159265f * specs[i].radius * specs[i].radius);
+    dense.density = specs[i].mass / (pi<float> * specs[i].radius * specs[i].radius);
     world.createShape(discs[i], dense, Circle{{}, specs[i].radius});
   }
   const std::array<float, 2> pins{6.482268f, 6.51538f}; // where the bounding circles touch
@@ -459,7 +460,7 @@ TEST(SoakRegression2D, a_chain_of_sliders_between_tiny_heavy_discs_does_not_gain
 BodyId movingDisc(World& world, const Vec2f& at, float angle, const Vec2f& v, float w, float mass, float radius) {
   const BodyId body = movingBody(world, at, angle, v, w);
   ShapeDef shape;
-  shape.density = mass / (3.14159265f * radius * radius);
+  shape.density = mass / (pi<float> * radius * radius);
   world.createShape(body, shape, Circle{{}, radius});
   return body;
 }

@@ -4,6 +4,7 @@
 // the boundary values that are valid (zero where zero means something).
 #include "support/validation_table.hpp"
 
+#include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/effectors.hpp>
 #include <impetus/rigid2d/world.hpp>
 
@@ -597,8 +598,8 @@ TEST(Rigid2dValidation, revolute_and_prismatic_joints) {
   expectAccepted({
       {"revolute limits at -pi and pi, equal limits, zero spring", revolute([](RevoluteJointDef& d) {
          d.enableLimit = true;
-         d.lowerAngle = -3.14159265f;
-         d.upperAngle = 3.14159265f;
+         d.lowerAngle = -pi<float>;
+         d.upperAngle = pi<float>;
        })},
       {"a locked prismatic (lower == upper) with a non-unit axis", prismatic([](PrismaticJointDef& d) {
          d.enableLimit = true;

@@ -2,6 +2,7 @@
 // produce: rho g h by hand for the book's Mariana-trench ball, the U.S. Standard Atmosphere 1976
 // tables, Android's getAltitude oracles, Wheatstone bridges solved here as voltage dividers, the
 // book's balance-board example (0.30, -0.10) and Table 23-3, and moving averages on ramps.
+#include <impetus/math/scalar.hpp>
 #include <impetus/sensors/analog_button.hpp>
 #include <impetus/sensors/balance_board.hpp>
 #include <impetus/sensors/barometer.hpp>
@@ -113,7 +114,7 @@ TEST(AnalogButton, mash_rate_counts_presses_with_hysteresis) {
   for (int i = 0; i < 1500; ++i) {
     const double t = i / 500.0;
     const double phase = std::fmod(t * 7.0, 1.0);
-    const double s = phase < 0.5 ? 0.9 * std::sin(phase * 2.0 * 3.141592653589793) : 0.0;
+    const double s = phase < 0.5 ? 0.9 * std::sin(phase * 2.0 * pi<double>) : 0.0;
     completed += mash.update(t, std::clamp(s + noise(rng), 0.0, 1.0)) ? 1 : 0;
   }
   EXPECT_EQ(completed, 21);

@@ -23,6 +23,7 @@
 // 2 for bad arguments.
 #include <impetus/core/task_runner.hpp>
 #include <impetus/error.hpp>
+#include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/world.hpp>
 
 #include <algorithm>
@@ -130,13 +131,13 @@ void addBody(Episode& e, Random& rng, const Vec2f& at, bool closed) {
   float extent = size;
   switch (rng.below(4)) {
   case 0:
-    area = 3.14159f * size * size;
+    area = pi<float> * size * size;
     shape.density = mass / area;
     e.world.createShape(body, shape, Circle{{}, size});
     break;
   case 1: {
     const float radius = 0.3f * size;
-    area = 3.14159f * radius * radius + 1.4f * size * 2.0f * radius;
+    area = pi<float> * radius * radius + 1.4f * size * 2.0f * radius;
     shape.density = mass / area;
     e.world.createShape(body, shape, Capsule{{-0.7f * size, 0.0f}, {0.7f * size, 0.0f}, radius});
     break;

@@ -2,6 +2,7 @@
 // port thruster turns right, the aft centre of drag gives directional stability.
 #include "support/error_field.hpp"
 
+#include <impetus/math/scalar.hpp>
 #include <impetus/vehicles/hovercraft.hpp>
 
 #include <gtest/gtest.h>
@@ -74,7 +75,7 @@ float yawAfterDisturbance(const Vec2f& centreOfDrag) {
   }
   // How far the bow points from the velocity (sideslip): small when the craft weathervanes.
   const Vec2f v = world.linearVelocity(craft.body());
-  const float slip = std::remainder(heading - std::atan2(v.y, v.x), 2.0f * 3.14159265f);
+  const float slip = std::remainder(heading - std::atan2(v.y, v.x), 2.0f * pi<float>);
   return std::abs(world.angularVelocity(craft.body())) + std::abs(slip);
 }
 

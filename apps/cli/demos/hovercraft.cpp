@@ -8,6 +8,7 @@
 // step: the impulse is the same physics, so both conserve momentum and lose kinetic energy alike.
 #include "demos/demos.hpp"
 
+#include <impetus/math/scalar.hpp>
 #include <impetus/vehicles/hovercraft.hpp>
 
 #include <fmt/core.h>
@@ -27,7 +28,7 @@ rigid2d::WorldDef flatWorld(rigid2d::SolverKind solver) {
   return def;
 }
 
-float degrees(float rad) { return rad * 180.0f / 3.14159265f; }
+float degrees(float rad) { return radToDeg(rad); }
 
 } // namespace
 
@@ -50,7 +51,8 @@ int demoHovercraft(const DemoOptions& options) {
       if (i % (20 * 60) == 0) {
         fmt::print("  t = {:5.1f} s  x = {:8.2f} m  y = {:7.2f} m  speed = {:5.2f} m/s  heading = {:7.2f} deg  "
                    "sideslip = {:6.2f} deg\n",
-                   t, p.x, p.y, length(v), degrees(heading), degrees(std::remainder(heading - track, 6.2831853f)));
+                   t, p.x, p.y, length(v), degrees(heading),
+                   degrees(std::remainder(heading - track, 2.0f * pi<float>)));
       }
     }
     craft.applyLoads(controls, dt);
@@ -67,7 +69,7 @@ int demoBumperCars(const DemoOptions& options) {
     const bool book = solver == rigid2d::SolverKind::bookImpulse;
     rigid2d::World world(flatWorld(solver));
     vehicles::Hovercraft player(world, {}, {-40.0f, 4.0f}, 0.0f, 10.0f);
-    vehicles::Hovercraft other(world, {}, {0.0f, 30.0f}, -1.5707963f, 5.0f);
+    vehicles::Hovercraft other(world, {}, {0.0f, 30.0f}, -0.5f * pi<float>, 5.0f);
     world.setLinearVelocity(player.body(), {8.0f, 0.0f});
     world.setLinearVelocity(other.body(), {0.0f, -2.0f});
     std::vector<std::vector<double>> rows;

@@ -10,6 +10,7 @@
 #include "plot.hpp"
 #include "rigid2d_draw.hpp"
 
+#include <impetus/math/scalar.hpp>
 #include <impetus/vehicles/hovercraft.hpp>
 
 #include <imgui.h>
@@ -34,7 +35,7 @@ constexpr float repeatTime = 20.0f;  // s
 struct Arena {
   explicit Arena(SolverKind solver) : world(worldDef(solver)) {
     player.emplace(world, vehicles::HovercraftParams{}, Vec2f{-40.0f, 4.0f}, 0.0f, 10.0f);
-    other.emplace(world, vehicles::HovercraftParams{}, Vec2f{0.0f, 30.0f}, -1.5707963f, 5.0f);
+    other.emplace(world, vehicles::HovercraftParams{}, Vec2f{0.0f, 30.0f}, -0.5f * pi<float>, 5.0f);
     world.setLinearVelocity(player->body(), {8.0f, 0.0f});
     world.setLinearVelocity(other->body(), {0.0f, -2.0f});
   }

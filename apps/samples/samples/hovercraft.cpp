@@ -8,6 +8,7 @@
 // one. Without keys an autopilot slaloms. Plots: speed (m/s), thrust (N), sideslip (deg).
 #include "rigid2d_sample.hpp"
 
+#include <impetus/math/scalar.hpp>
 #include <impetus/vehicles/hovercraft.hpp>
 
 #include <imgui.h>
@@ -72,7 +73,7 @@ protected:
     speed_.push(length(v));
     thrust_.push(craft_->thrust());
     const float heading = world().angle(body);
-    const float slip = length(v) > 0.05f ? std::remainder(heading - std::atan2(v.y, v.x), 6.2831853f) : 0.0f;
+    const float slip = length(v) > 0.05f ? std::remainder(heading - std::atan2(v.y, v.x), 2.0f * pi<float>) : 0.0f;
     sideslip_.push(slip * toDegrees);
     trailClock_ += dt;
     if (trailClock_ >= 0.25f) {

@@ -14,6 +14,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <impetus/math/scalar.hpp>
 #include <optional>
 #include <vector>
 
@@ -116,7 +117,7 @@ public:
       setup();
     }
     ImGui::TextWrapped("terminal speed in still air sqrt(2 m g / (rho Cd A)) = %.1f m/s",
-                       cd_ > 0.0f ? std::sqrt(2.0 * 9.81 / (1.23 * static_cast<double>(cd_) * 3.14159265 * 0.01))
+                       cd_ > 0.0f ? std::sqrt(2.0 * 9.81 / (1.23 * static_cast<double>(cd_) * pi<double> * 0.01))
                                   : 0.0);
     count_.plot("particles", "%.0f");
     energy_.plot("kinetic energy (J)", "%.0f J");

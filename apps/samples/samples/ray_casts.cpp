@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <impetus/math/scalar.hpp>
 
 namespace impetus::samples {
 namespace {
@@ -60,7 +61,7 @@ public:
 
 protected:
   void afterStep(float dt) override {
-    angle_ = std::remainder(angle_ + rate_ * dt, 6.2831853f);
+    angle_ = std::remainder(angle_ + rate_ * dt, 2.0f * pi<float>);
     const std::optional<RayHit> hit = world().castRayClosest(origin_, direction() * range_);
     distance_.push(hit ? hit->fraction * range_ : range_);
   }

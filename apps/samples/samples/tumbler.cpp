@@ -6,11 +6,12 @@
 #include "bench_scene_sample.hpp"
 
 #include <imgui.h>
+#include <impetus/math/scalar.hpp>
 
 namespace impetus::samples {
 namespace {
 
-constexpr float degrees = 3.14159265f / 180.0f;
+constexpr float degrees = pi<float> / 180.0f;
 
 class Tumbler final : public BenchSceneSample {
 public:

@@ -5,6 +5,7 @@
 
 #include <impetus/core/id_pool.hpp>
 #include <impetus/math/quat.hpp>
+#include <impetus/math/scalar.hpp>
 #include <impetus/math/vec3.hpp>
 
 #include <cstdint>
@@ -102,7 +103,7 @@ struct Attractor {
 struct EmitterDef {
   Vec3f position;
   Vec3f direction{0.0f, 1.0f, 0.0f};
-  float coneAngle = 3.14159265f;     ///< half-angle, rad
+  float coneAngle = pi<float>;       ///< half-angle, rad
   float minSpeed = 1.0f;             ///< m/s
   float maxSpeed = 2.0f;             ///< m/s
   float rate = 0.0f;                 ///< particles per second after the burst
