@@ -5,7 +5,7 @@ namespace impetus::bench {
 
 Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
   Box2DScene built{std::make_unique<b2World>(b2Vec2(scene.gravity.x, scene.gravity.y)), {}};
-  built.world->SetAllowSleeping(false);
+  built.world->SetAllowSleeping(scene.enableSleep);
   built.world->SetContinuousPhysics(continuous);
   built.bodies.reserve(scene.bodies.size());
   for (const SceneBody& b : scene.bodies) {
@@ -25,24 +25,33 @@ Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
     bd.angularVelocity = b.angularVelocity;
     bd.linearVelocity = b2Vec2(b.linearVelocity.x, b.linearVelocity.y);
     bd.bullet = b.bullet;
-    bd.allowSleep = false;
+    bd.allowSleep = scene.enableSleep;
+    bd.awake = b.awake;
     built.bodies.push_back(built.world->CreateBody(&bd));
   }
   for (const SceneShape& s : scene.shapes) {
     b2FixtureDef fd;
-    fd.density = sceneDensity;
+    fd.density = s.density;
     fd.friction = sceneFriction;
     fd.restitution = 0.0f;
     fd.filter.groupIndex = static_cast<int16_t>(s.group);
     b2PolygonShape box;
     b2CircleShape circle;
-    if (s.kind == SceneShape::Kind::circle) {
+    b2EdgeShape edge;
+    switch (s.kind) {
+    case SceneShape::Kind::circle:
       circle.m_p.Set(s.center.x, s.center.y);
       circle.m_radius = s.radius;
       fd.shape = &circle;
-    } else {
+      break;
+    case SceneShape::Kind::segment:
+      edge.SetTwoSided(b2Vec2(s.point1.x, s.point1.y), b2Vec2(s.point2.x, s.point2.y));
+      fd.shape = &edge;
+      break;
+    case SceneShape::Kind::box:
       box.SetAsBox(s.halfWidth, s.halfHeight, b2Vec2(s.center.x, s.center.y), s.angle);
       fd.shape = &box;
+      break;
     }
     built.bodies[s.body]->CreateFixture(&fd);
   }
@@ -52,6 +61,9 @@ Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
     jd.enableLimit = j.enableLimit;
     jd.lowerAngle = j.lowerAngle;
     jd.upperAngle = j.upperAngle;
+    jd.enableMotor = j.enableMotor;
+    jd.motorSpeed = j.motorSpeed;
+    jd.maxMotorTorque = j.maxMotorTorque;
     built.world->CreateJoint(&jd);
   }
   return built;

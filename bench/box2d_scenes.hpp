@@ -1,8 +1,8 @@
 // The 2D benchmark scenes (rigid2d_scenes.hpp) built in Box2D 2.4.1, the peer impetus-bench
 // compares against: the same bodies, boxes and circles, gravity, density and friction. Box2D's
 // polygons carry its fixed skin of b2_polygonRadius (1 cm) around the given box; that is Box2D's
-// own collision margin, not a change of geometry. Sleeping is off, as in Impetus. Continuous
-// collision is off by default: no body in these scenes moves far enough in a step to tunnel
+// own collision margin, not a change of geometry. Sleeping as the scene says (off but in v3's smash and tumbler), as in
+// Impetus. Continuous collision is off by default: no body in these scenes moves far enough in a step to tunnel
 // (Impetus' sweep against static shapes, for bodies that move more than their core radius in a
 // step, finds nothing to stop here), while Box2D 2.4.1 computes a time of impact for every
 // contact of a dynamic body with a static or kinematic one, every step.

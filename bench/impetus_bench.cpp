@@ -1,22 +1,30 @@
 // impetus-bench: the 2D rigid-body scenes of bench/rigid2d_scenes.hpp run side by side in Impetus
-// and in Box2D 2.4.1 with identical geometry at 1/60 s per step (Impetus: 4 substeps, on
-// --threads N threads, default 1; Box2D: single-threaded, 8 velocity and 3 position iterations;
-// neither sleeps, and Box2D's continuous collision is off unless --box2d-continuous: see
-// box2d_scenes.hpp).
+// and in its peers with identical geometry at 1/60 s per step: Box2D 2.4.1 (Debian's; single-
+// threaded, 8 velocity and 3 position iterations, continuous collision off unless
+// --box2d-continuous: see box2d_scenes.hpp) and, where CMake was pointed at a Box2D v3 build
+// (IMPETUS_BOX2D3_DIR), Box2D v3 (4 substeps, continuous collision on, its defaults, on
+// --threads workers: see box2d3_scenes.hpp). Impetus: 4 substeps, on --threads N threads
+// (default 1). Nothing sleeps, in any engine, but in the scenes that say so (v3's smash and
+// tumbler, as v3's benchmark runs them).
 //
 //   impetus-bench [--scene NAME]... [--steps N] [--threads N] [--substeps N] [--contact-hertz H]
-//                 [--engine both|impetus|box2d] [--box2d-continuous] [--json]
+//                 [--engine all|impetus|box2d|box2d3] [--box2d-continuous] [--json]
 //
-// NAME is a scene (large_pyramid, many_pyramids, tumbler, smash, joint_grid, ragdolls, rain_1k, rain_10k, rain_100k, or
-// rain_N / rain_Nk for other counts), "rain" (the three rain sizes) or "all" (the default). Each
+// NAME is a scene (Box2D v3's large_pyramid, many_pyramids, tumbler, smash and joint_grid; Impetus'
+// ragdolls, pyramid_row, kinematic_tumbler, smash_awake, circle_rain_1k, circle_rain_10k,
+// circle_rain_100k, or circle_rain_N / circle_rain_Nk for other counts), "circle_rain" (the three
+// sizes) or "all" (the default). Each
 // scene is built (not timed), then stepped N times (default: the scene's own count, 500 for the
 // pyramids) with a steady clock around the whole step loop: no warm-up, the pyramid's first
-// steps, when its contacts are created, are part of the benchmark. The ratio is the peer's time
+// steps, when its contacts are created, are part of the benchmark. A ratio is the peer's time
 // over Impetus' time (above 1: Impetus is faster). Quality figures, measured the same way in
-// both engines: how far the pyramids' top boxes sank (at the end, and the most after any step),
-// and the deepest overlap of any two shapes at the end. --json prints one JSON object per scene
-// and line. Figures: docs/performance.md.
+// every engine: how far the pyramids' top boxes sank (at the end, and the most after any step),
+// the deepest overlap of any two shapes at the end, and the widest joint gap. --json prints one
+// JSON object per scene and line, the peers in "peers". Figures: docs/performance.md.
 #include "box2d_scenes.hpp"
+#if IMPETUS_HAVE_BOX2D3
+#include "box2d3_scenes.hpp"
+#endif
 #include "rigid2d_scenes.hpp"
 
 #include <impetus/core/task_runner.hpp>
@@ -132,6 +140,27 @@ EngineResult runBox2D(const bench::Rigid2dScene& scene, int steps, bool continuo
   return r;
 }
 
+#if IMPETUS_HAVE_BOX2D3
+EngineResult runBox2D3(const bench::Rigid2dScene& scene, int steps, int threads) {
+  bench::Box2D3Scene built(scene, threads);
+  EngineResult r;
+  TopWatch watch(scene);
+  const double ms = timeMs([&] {
+    for (int i = 0; i < steps; ++i) {
+      built.step();
+      for (std::size_t k = 0; k < scene.tops.size(); ++k) {
+        watch.observe(k, built.height(scene.tops[k]));
+      }
+    }
+  });
+  r.topMaxSink = watch.maxSink;
+  r.msPerStep = ms / steps;
+  r.touchingContacts = built.touchingContacts();
+  measureQuality(scene, built.transforms(), r);
+  return r;
+}
+#endif
+
 /// The scenes a --scene argument names.
 std::vector<std::string> expand(const std::vector<std::string>& requested) {
   std::vector<std::string> names;
@@ -140,8 +169,8 @@ std::vector<std::string> expand(const std::vector<std::string>& requested) {
       for (const std::string& n : bench::rigid2dSceneNames()) {
         names.push_back(n);
       }
-    } else if (r == "rain") {
-      for (const char* n : {"rain_1k", "rain_10k", "rain_100k"}) {
+    } else if (r == "circle_rain") {
+      for (const char* n : {"circle_rain_1k", "circle_rain_10k", "circle_rain_100k"}) {
         names.emplace_back(n);
       }
     } else {
@@ -158,25 +187,62 @@ std::string fixed(double value, int decimals) {
   return buffer;
 }
 
+/// The quality figures of one engine's run, for the JSON, under `prefix` ("impetus_" or "").
+void addQuality(nlohmann::json& j, const std::string& prefix, const bench::Rigid2dScene& scene, const EngineResult& r) {
+  j[prefix + "ms_per_step"] = r.msPerStep;
+  if (!scene.tops.empty()) {
+    j[prefix + "top_sink_m"] = r.topSink;
+    j[prefix + "top_max_sink_m"] = r.topMaxSink;
+  }
+  j[prefix + "largest_overlap_m"] = r.largestOverlap;
+  if (!scene.joints.empty()) {
+    j[prefix + "largest_joint_gap_m"] = r.largestJointGap;
+  }
+  j[prefix + "touching_contacts"] = r.touchingContacts;
+  j[prefix + "finite"] = r.finite;
+}
+
+/// One table cell group: ms, sink, max sink, overlap.
+std::string cells(const bench::Rigid2dScene& scene, const std::optional<EngineResult>& r) {
+  if (!r) {
+    return std::string(37, ' ');
+  }
+  const bool tops = !scene.tops.empty();
+  char buffer[128];
+  std::snprintf(buffer, sizeof buffer, "%9s %9s %9s %7s%s", fixed(r->msPerStep, 3).c_str(),
+                tops ? fixed(r->topSink, 4).c_str() : "-", tops ? fixed(r->topMaxSink, 4).c_str() : "-",
+                fixed(r->largestOverlap, 4).c_str(), r->finite ? "" : " NaN!");
+  return buffer;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"impetus-bench: 2D rigid-body scenes in Impetus and in Box2D 2.4.1, side by side"};
+  CLI::App app{"impetus-bench: 2D rigid-body scenes in Impetus and in its peers (Box2D 2.4.1; Box2D v3 where "
+               "built with IMPETUS_BOX2D3_DIR), side by side"};
   std::vector<std::string> requested{"all"};
   std::optional<int> stepsOverride;
-  std::string engine = "both";
+  std::string engine = "all";
   int threads = 1;
   bench::ImpetusSettings settings;
   bool json = false;
   bool peerContinuous = false;
+#if IMPETUS_HAVE_BOX2D3
+  const bool haveBox2D3 = true;
+#else
+  const bool haveBox2D3 = false;
+#endif
   app.add_option("--scene", requested,
-                 "large_pyramid, many_pyramids, tumbler, smash, joint_grid, ragdolls, rain_1k, rain_10k, rain_100k, "
-                 "rain (all three) or all")
+                 "large_pyramid, many_pyramids, tumbler, smash, joint_grid (Box2D v3's scenes), ragdolls, pyramid_row, "
+                 "kinematic_tumbler, smash_awake, circle_rain_1k, circle_rain_10k, circle_rain_100k, circle_rain (all "
+                 "three) or all")
       ->capture_default_str();
   app.add_option("--steps", stepsOverride, "steps of 1/60 s (default: the scene's own, 500 for the pyramids)")
       ->check(CLI::PositiveNumber);
-  app.add_option("--engine", engine, "which engines to run")
-      ->check(CLI::IsMember({"both", "impetus", "box2d"}))
+  app.add_option("--engine", engine,
+                 "which engines to run: all (Impetus and every peer built in), impetus, box2d (2.4.1) or box2d3 "
+                 "(v3, where built)")
+      ->check(CLI::IsMember({"all", "impetus", "box2d", "box2d3"}))
       ->capture_default_str();
   app.add_option("--substeps", settings.substeps, "Impetus solver substeps per step")
       ->check(CLI::Range(1, 64))
@@ -194,14 +260,20 @@ int main(int argc, char** argv) {
   app.add_option("--simd", simd,
                  "Impetus contact-solve lanes: the widest the CPU runs (AVX2: 8) or the baseline (SSE2: 4)")
       ->check(CLI::IsMember({"widest", "baseline"}));
-  app.add_option("--threads", threads, "threads for Impetus (a ThreadPool; Box2D 2.4.1 is single-threaded)")
+  app.add_option("--threads", threads,
+                 "threads for Impetus (a ThreadPool) and Box2D v3 (its workers); Box2D 2.4.1 is single-threaded")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   app.add_flag("--box2d-continuous", peerContinuous,
-               "switch Box2D's continuous collision on (its own default; off here: nothing in these scenes is fast "
-               "enough to tunnel)");
+               "switch Box2D 2.4.1's continuous collision on (its own default; off here: nothing in these scenes is "
+               "fast enough to tunnel; Box2D v3 keeps its default, on)");
   app.add_flag("--json", json, "one JSON object per scene and line");
   CLI11_PARSE(app, argc, argv);
+  if (engine == "box2d3" && !haveBox2D3) {
+    std::cerr << "impetus-bench: --engine box2d3: this build has no Box2D v3 (configure with "
+                 "-DIMPETUS_BOX2D3_DIR=<a Box2D v3 source tree built in its build/>)\n";
+    return 2;
+  }
   settings.simd = simd == "baseline" ? impetus::rigid2d::SimdLevel::baseline : impetus::rigid2d::SimdLevel::widest;
   impetus::rigid2d::WorldDef simdDef;
   simdDef.simd = settings.simd;
@@ -216,19 +288,38 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  const bool runI = engine != "box2d";
-  const bool runB = engine != "impetus";
+  const bool runI = engine == "all" || engine == "impetus";
+  const bool runB = engine == "all" || engine == "box2d";
+  const bool runB3 = haveBox2D3 && (engine == "all" || engine == "box2d3");
+  std::string box2d3Name = "box2d 3";
+#if IMPETUS_HAVE_BOX2D3
+  box2d3Name = bench::Box2D3Scene::version();
+#endif
   if (!json) {
     std::cout << "Impetus on " << threads << (threads == 1 ? " thread" : " threads") << ", contacts solved with "
-              << lanes << ", Box2D single-threaded; 1/60 s steps; Impetus " << settings.substeps << " substeps at "
-              << settings.contactHertz << " Hz, Box2D 2.4.1 " << bench::box2dVelocityIterations << " velocity / "
+              << lanes << "; 1/60 s steps; Impetus " << settings.substeps << " substeps at " << settings.contactHertz
+              << " Hz; Box2D 2.4.1 single-threaded, " << bench::box2dVelocityIterations << " velocity / "
               << bench::box2dPositionIterations << " position iterations, continuous collision "
-              << (peerContinuous ? "on" : "off") << "; no sleeping\n"
-              << "ms = per step; ratio = Box2D time / Impetus time; sink = how far the pyramid top dropped by the\n"
-              << "end (max: the most at any step); overlap = the deepest between two shapes at the end; in m\n\n";
-    std::printf("%-14s %7s %5s | %-37s | %-37s | %6s\n", "", "", "", "Impetus", "Box2D 2.4.1", "");
-    std::printf("%-14s %7s %5s | %9s %9s %9s %7s | %9s %9s %9s %7s | %6s\n", "scene", "bodies", "steps", "ms", "sink",
+              << (peerContinuous ? "on" : "off");
+#if IMPETUS_HAVE_BOX2D3
+    if (runB3) {
+      std::cout << "; " << box2d3Name << " on " << threads << (threads == 1 ? " worker" : " workers") << ", "
+                << bench::box2d3Substeps << " substeps, continuous collision on";
+    }
+#endif
+    std::cout << "; sleeping only where the scene says (smash, tumbler)\n"
+              << "ms = per step; ratio = the peer's time / Impetus' time; sink = how far the pyramid top dropped by\n"
+              << "the end (max: the most at any step); overlap = the deepest between two shapes at the end; in m\n\n";
+    std::printf("%-14s %7s %5s | %-37s | %-37s | %6s", "", "", "", "Impetus", "Box2D 2.4.1", "");
+    if (runB3) {
+      std::printf(" | %-37s | %6s", "Box2D v3", "");
+    }
+    std::printf("\n%-14s %7s %5s | %9s %9s %9s %7s | %9s %9s %9s %7s | %6s", "scene", "bodies", "steps", "ms", "sink",
                 "max sink", "overlap", "ms", "sink", "max sink", "overlap", "ratio");
+    if (runB3) {
+      std::printf(" | %9s %9s %9s %7s | %6s", "ms", "sink", "max sink", "overlap", "ratio");
+    }
+    std::printf("\n");
     std::fflush(stdout);
   }
 
@@ -237,16 +328,23 @@ int main(int argc, char** argv) {
     const int steps = stepsOverride.value_or(scene.defaultSteps);
     std::optional<EngineResult> ri;
     std::optional<EngineResult> rb;
+    std::optional<EngineResult> rb3;
     if (runI) {
       ri = runImpetus(scene, steps, threads, settings);
     }
     if (runB) {
       rb = runBox2D(scene, steps, peerContinuous);
     }
-    // Peer time over Impetus time; only when both ran. (A plain double: GCC 12 misreads an
+#if IMPETUS_HAVE_BOX2D3
+    if (runB3) {
+      rb3 = runBox2D3(scene, steps, threads);
+    }
+#endif
+    // A peer's time over Impetus' time; 0 unless both ran. (A plain double: GCC 12 misreads an
     // optional<double> here as maybe uninitialized.)
-    const bool both = ri.has_value() && rb.has_value();
-    const double ratio = both ? rb->msPerStep / ri->msPerStep : 0.0;
+    const auto ratioOf = [&](const std::optional<EngineResult>& peer) {
+      return ri.has_value() && peer.has_value() ? peer->msPerStep / ri->msPerStep : 0.0;
+    };
 
     if (json) {
       nlohmann::json j;
@@ -257,62 +355,56 @@ int main(int argc, char** argv) {
       j["time_step_s"] = bench::sceneTimeStep;
       j["threads"] = threads;
       if (ri) {
-        j["impetus_ms_per_step"] = ri->msPerStep;
         j["impetus_substeps"] = settings.substeps;
         j["impetus_contact_hertz"] = settings.contactHertz;
         j["impetus_contact_reuse_m"] = settings.contactReuseDistance;
         j["impetus_simd"] = probe.contactSimd();
         j["impetus_contact_lanes"] = probe.contactLanes();
-        if (!scene.tops.empty()) {
-          j["impetus_top_sink_m"] = ri->topSink;
-          j["impetus_top_max_sink_m"] = ri->topMaxSink;
-        }
-        j["impetus_largest_overlap_m"] = ri->largestOverlap;
-        if (!scene.joints.empty()) {
-          j["impetus_largest_joint_gap_m"] = ri->largestJointGap;
-        }
-        j["impetus_touching_contacts"] = ri->touchingContacts;
-        j["impetus_finite"] = ri->finite;
+        addQuality(j, "impetus_", scene, *ri);
       }
-      if (rb) {
-        j["peer"] = "box2d 2.4.1";
-        j["peer_ms_per_step"] = rb->msPerStep;
-        j["peer_velocity_iterations"] = bench::box2dVelocityIterations;
-        j["peer_position_iterations"] = bench::box2dPositionIterations;
-        j["peer_continuous"] = peerContinuous;
-        if (!scene.tops.empty()) {
-          j["peer_top_sink_m"] = rb->topSink;
-          j["peer_top_max_sink_m"] = rb->topMaxSink;
+      nlohmann::json peers = nlohmann::json::array();
+      const auto addPeer = [&](const std::string& peerName, const std::optional<EngineResult>& r,
+                               nlohmann::json peerSettings) {
+        if (!r) {
+          return;
         }
-        j["peer_largest_overlap_m"] = rb->largestOverlap;
-        if (!scene.joints.empty()) {
-          j["peer_largest_joint_gap_m"] = rb->largestJointGap;
+        nlohmann::json p;
+        p["peer"] = peerName;
+        p["settings"] = std::move(peerSettings);
+        addQuality(p, "", scene, *r);
+        if (ri) {
+          p["ratio"] = ratioOf(r);
         }
-        j["peer_touching_contacts"] = rb->touchingContacts;
-        j["peer_finite"] = rb->finite;
-      }
-      if (both) {
-        j["ratio"] = ratio;
-      }
+        peers.push_back(std::move(p));
+      };
+      addPeer("box2d 2.4.1", rb,
+              {{"threads", 1},
+               {"velocity_iterations", bench::box2dVelocityIterations},
+               {"position_iterations", bench::box2dPositionIterations},
+               {"continuous", peerContinuous}});
+#if IMPETUS_HAVE_BOX2D3
+      addPeer(box2d3Name, rb3, {{"threads", threads}, {"substeps", bench::box2d3Substeps}, {"continuous", true}});
+#endif
+      j["peers"] = std::move(peers);
       std::cout << j.dump() << '\n' << std::flush;
     } else {
-      const auto cells = [&](const std::optional<EngineResult>& r) {
-        if (!r) {
-          return std::string(37, ' ');
-        }
-        const bool tops = !scene.tops.empty();
-        char buffer[128];
-        std::snprintf(buffer, sizeof buffer, "%9s %9s %9s %7s%s", fixed(r->msPerStep, 3).c_str(),
-                      tops ? fixed(r->topSink, 4).c_str() : "-", tops ? fixed(r->topMaxSink, 4).c_str() : "-",
-                      fixed(r->largestOverlap, 4).c_str(), r->finite ? "" : " NaN!");
-        return std::string(buffer);
+      const auto ratioCell = [&](const std::optional<EngineResult>& peer) {
+        return ri.has_value() && peer.has_value() ? fixed(ratioOf(peer), 2) : std::string("-");
       };
-      std::printf("%-14s %7zu %5d | %s | %s | %6s\n", scene.name.c_str(), scene.bodies.size(), steps, cells(ri).c_str(),
-                  cells(rb).c_str(), both ? fixed(ratio, 2).c_str() : "-");
+      std::printf("%-14s %7zu %5d | %s | %s | %6s", scene.name.c_str(), scene.bodies.size(), steps,
+                  cells(scene, ri).c_str(), cells(scene, rb).c_str(), ratioCell(rb).c_str());
+      if (runB3) {
+        std::printf(" | %s | %6s", cells(scene, rb3).c_str(), ratioCell(rb3).c_str());
+      }
+      std::printf("\n");
       if (!scene.joints.empty()) {
-        std::printf("%-14s %7zu joints; widest joint gap at the end: Impetus %s m, Box2D %s m\n", "",
+        std::printf("%-14s %7zu joints; widest joint gap at the end: Impetus %s m, Box2D 2.4.1 %s m", "",
                     scene.joints.size(), ri ? fixed(ri->largestJointGap, 4).c_str() : "-",
                     rb ? fixed(rb->largestJointGap, 4).c_str() : "-");
+        if (runB3) {
+          std::printf(", Box2D v3 %s m", rb3 ? fixed(rb3->largestJointGap, 4).c_str() : "-");
+        }
+        std::printf("\n");
       }
       std::fflush(stdout);
     }

@@ -1,109 +1,23 @@
 // Builders of the 2D rigid-body benchmark scenes (see rigid2d_scenes.hpp for what each one is).
 #include "rigid2d_scenes.hpp"
 
+#include "rigid2d_scene_parts.hpp"
+
 #include <impetus/error.hpp>
 #include <impetus/math/scalar.hpp>
-#include <impetus/rigid2d/manifold.hpp>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <limits>
-#include <numeric>
-#include <variant>
 
 namespace impetus::bench {
+using namespace parts;
 namespace {
-
-using rigid2d::BodyType;
-
-std::uint32_t addBody(Rigid2dScene& scene, BodyType type, const Vec2f& position, float angularVelocity = 0.0f) {
-  scene.bodies.push_back({type, position, angularVelocity, {}, false});
-  return static_cast<std::uint32_t>(scene.bodies.size() - 1);
-}
-
-void addBox(Rigid2dScene& scene, std::uint32_t body, float halfWidth, float halfHeight, const Vec2f& center = {},
-            float angle = 0.0f) {
-  SceneShape s;
-  s.kind = SceneShape::Kind::box;
-  s.body = body;
-  s.center = center;
-  s.halfWidth = halfWidth;
-  s.halfHeight = halfHeight;
-  s.angle = angle;
-  scene.shapes.push_back(s);
-}
-
-void addCircle(Rigid2dScene& scene, std::uint32_t body, float radius, std::int32_t group = 0,
-               const Vec2f& center = {}) {
-  SceneShape s;
-  s.kind = SceneShape::Kind::circle;
-  s.body = body;
-  s.radius = radius;
-  s.group = group;
-  s.center = center;
-  scene.shapes.push_back(s);
-}
-
-void addJoint(Rigid2dScene& scene, std::uint32_t a, std::uint32_t b, const Vec2f& anchor, float lower = 0.0f,
-              float upper = 0.0f) {
-  scene.joints.push_back({a, b, anchor, lower != upper, lower, upper});
-}
-
-/// A pyramid of `base` boxes at the bottom, centred on x = centerX, standing on y = 0; its top
-/// box is recorded in scene.tops.
-void addPyramid(Rigid2dScene& scene, int base, float centerX) {
-  constexpr float h = pyramidBoxHalfSize;
-  for (int i = 0; i < base; ++i) {
-    const int rowCount = base - i;
-    const float y = static_cast<float>(2 * i + 1) * h;
-    for (int j = 0; j < rowCount; ++j) {
-      // Row i: boxes 2h apart, centred on centerX.
-      const float x = centerX + (static_cast<float>(2 * j) - static_cast<float>(rowCount - 1)) * h;
-      const std::uint32_t b = addBody(scene, BodyType::dynamicBody, {x, y});
-      addBox(scene, b, h, h);
-    }
-  }
-  scene.tops.push_back(static_cast<std::uint32_t>(scene.bodies.size() - 1));
-}
 
 /// Fractional part of i times the golden ratio: an evenly spread sequence in [0, 1).
 float goldenFraction(std::size_t i) {
   const double x = static_cast<double>(i) * 0.6180339887498949;
   return static_cast<float>(x - std::floor(x));
-}
-
-using Geometry = std::variant<rigid2d::Polygon, rigid2d::Circle>;
-
-Geometry geometryOf(const SceneShape& s) {
-  if (s.kind == SceneShape::Kind::circle) {
-    return rigid2d::Circle{s.center, s.radius};
-  }
-  return rigid2d::makeOffsetBox(s.halfWidth, s.halfHeight, s.center, s.angle);
-}
-
-/// The smallest separation of the manifold's points (positive when apart; large when none).
-float separation(const rigid2d::Manifold& m) {
-  float least = 1.0e30f;
-  for (int i = 0; i < m.pointCount; ++i) {
-    least = std::min(least, m.points[static_cast<std::size_t>(i)].separation);
-  }
-  return least;
-}
-
-float separation(const Geometry& a, const Transform2f& xfA, const Geometry& b, const Transform2f& xfB) {
-  const auto* ca = std::get_if<rigid2d::Circle>(&a);
-  const auto* cb = std::get_if<rigid2d::Circle>(&b);
-  if (ca != nullptr && cb != nullptr) {
-    return separation(rigid2d::collideCircles(*ca, xfA, *cb, xfB));
-  }
-  if (ca != nullptr) {
-    return separation(rigid2d::collidePolygonAndCircle(std::get<rigid2d::Polygon>(b), xfB, *ca, xfA));
-  }
-  if (cb != nullptr) {
-    return separation(rigid2d::collidePolygonAndCircle(std::get<rigid2d::Polygon>(a), xfA, *cb, xfB));
-  }
-  return separation(rigid2d::collidePolygons(std::get<rigid2d::Polygon>(a), xfA, std::get<rigid2d::Polygon>(b), xfB));
 }
 
 } // namespace
@@ -118,9 +32,9 @@ Rigid2dScene largePyramidScene(int base) {
   return scene;
 }
 
-Rigid2dScene manyPyramidsScene(int count, int base) {
+Rigid2dScene pyramidRowScene(int count, int base) {
   Rigid2dScene scene;
-  scene.name = "many_pyramids";
+  scene.name = "pyramid_row";
   constexpr float h = pyramidBoxHalfSize;
   const float pitch = static_cast<float>(base + 1) * 2.0f * h; // one box of space between pyramids
   const float rowWidth = static_cast<float>(count) * pitch;
@@ -133,9 +47,9 @@ Rigid2dScene manyPyramidsScene(int count, int base) {
   return scene;
 }
 
-Rigid2dScene rainScene(std::size_t count) {
+Rigid2dScene circleRainScene(std::size_t count) {
   Rigid2dScene scene;
-  scene.name = "rain_" + (count % 1000 == 0 ? std::to_string(count / 1000) + "k" : std::to_string(count));
+  scene.name = "circle_rain_" + (count % 1000 == 0 ? std::to_string(count / 1000) + "k" : std::to_string(count));
   const std::size_t columns = std::max<std::size_t>(1, (count + rainRows - 1) / rainRows);
   const float halfInner = 0.5f * static_cast<float>(columns) * rainColumnSpacing + 0.5f * rainColumnSpacing;
   const std::uint32_t ground = addBody(scene, BodyType::staticBody, {0.0f, 0.0f});
@@ -155,9 +69,9 @@ Rigid2dScene rainScene(std::size_t count) {
   return scene;
 }
 
-Rigid2dScene tumblerScene(int grid) {
+Rigid2dScene kinematicTumblerScene(int grid) {
   Rigid2dScene scene;
-  scene.name = "tumbler";
+  scene.name = "kinematic_tumbler";
   const std::uint32_t drum = addBody(scene, BodyType::kinematicBody, {0.0f, 10.0f}, tumblerSpeed);
   addBox(scene, drum, 0.5f, 10.0f, {10.0f, 0.0f});
   addBox(scene, drum, 0.5f, 10.0f, {-10.0f, 0.0f});
@@ -175,9 +89,9 @@ Rigid2dScene tumblerScene(int grid) {
   return scene;
 }
 
-Rigid2dScene smashScene(int grid) {
+Rigid2dScene smashAwakeScene(int grid) {
   Rigid2dScene scene;
-  scene.name = "smash";
+  scene.name = "smash_awake";
   scene.gravity = {};
   constexpr float h = 0.1f;
   const float half = static_cast<float>(grid) * h;
@@ -268,20 +182,9 @@ Rigid2dScene ragdollScene(int columns, int rows) {
   return scene;
 }
 
-float largestJointGap(const Rigid2dScene& scene, std::span<const Transform2f> transforms) {
-  float widest = 0.0f;
-  for (const SceneJoint& j : scene.joints) {
-    const Vec2f localA = j.anchor - scene.bodies[j.bodyA].position; // bodies start unrotated
-    const Vec2f localB = j.anchor - scene.bodies[j.bodyB].position;
-    widest = std::max(
-        widest, distance(transformPoint(transforms[j.bodyA], localA), transformPoint(transforms[j.bodyB], localB)));
-  }
-  return widest;
-}
-
 std::vector<std::string> rigid2dSceneNames() {
-  return {"large_pyramid", "many_pyramids", "tumbler",  "smash",    "joint_grid",
-          "ragdolls",      "rain_1k",       "rain_10k", "rain_100k"};
+  return {"large_pyramid", "many_pyramids",     "tumbler",     "smash",          "joint_grid",      "ragdolls",
+          "pyramid_row",   "kinematic_tumbler", "smash_awake", "circle_rain_1k", "circle_rain_10k", "circle_rain_100k"};
 }
 
 Rigid2dScene makeRigid2dScene(std::string_view name) {
@@ -303,9 +206,19 @@ Rigid2dScene makeRigid2dScene(std::string_view name) {
   if (name == "ragdolls") {
     return ragdollScene();
   }
-  // rain_N or rain_Nk: N (thousand) circles.
-  if (name.starts_with("rain_") && name.size() > 5) {
-    std::string_view digits = name.substr(5);
+  if (name == "pyramid_row") {
+    return pyramidRowScene();
+  }
+  if (name == "kinematic_tumbler") {
+    return kinematicTumblerScene();
+  }
+  if (name == "smash_awake") {
+    return smashAwakeScene();
+  }
+  // circle_rain_N or circle_rain_Nk: N (thousand) circles.
+  constexpr std::string_view rain = "circle_rain_";
+  if (name.starts_with(rain) && name.size() > rain.size()) {
+    std::string_view digits = name.substr(rain.size());
     std::size_t scale = 1;
     if (digits.ends_with('k')) {
       digits.remove_suffix(1);
@@ -314,125 +227,13 @@ Rigid2dScene makeRigid2dScene(std::string_view name) {
     std::size_t count = 0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), count);
     if (error == std::errc{} && end == digits.data() + digits.size() && count > 0 && count <= 10000000 / scale) {
-      return rainScene(count * scale);
+      return circleRainScene(count * scale);
     }
   }
   throw Error("scene", "unknown 2D benchmark scene '" + std::string(name) +
-                           "' (large_pyramid, many_pyramids, tumbler, smash, joint_grid, ragdolls, rain_N or rain_Nk: "
-                           "rain_1k, rain_10k, rain_100k)");
-}
-
-ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings& settings) {
-  rigid2d::WorldDef def;
-  def.taskRunner = settings.runner;
-  def.substeps = settings.substeps;
-  def.contactHertz = settings.contactHertz;
-  def.contactReuseDistance = settings.contactReuseDistance;
-  def.simd = settings.simd;
-  def.gravity = scene.gravity;
-  def.enableSleep = settings.enableSleep;
-  ImpetusScene built{rigid2d::World(def), {}};
-  built.bodies.reserve(scene.bodies.size());
-  for (const SceneBody& b : scene.bodies) {
-    rigid2d::BodyDef bd;
-    bd.type = b.type;
-    bd.position = b.position;
-    bd.angularVelocity = b.angularVelocity;
-    bd.linearVelocity = b.linearVelocity;
-    bd.bullet = b.bullet;
-    built.bodies.push_back(built.world.createBody(bd));
-  }
-  rigid2d::ShapeDef sd;
-  sd.density = sceneDensity;
-  sd.friction = sceneFriction;
-  for (const SceneShape& s : scene.shapes) {
-    const rigid2d::BodyId body = built.bodies[s.body];
-    sd.filter.group = s.group;
-    if (s.kind == SceneShape::Kind::circle) {
-      built.world.createShape(body, sd, rigid2d::Circle{s.center, s.radius});
-    } else {
-      built.world.createShape(body, sd, rigid2d::makeOffsetBox(s.halfWidth, s.halfHeight, s.center, s.angle));
-    }
-  }
-  for (const SceneJoint& j : scene.joints) {
-    rigid2d::RevoluteJointDef jd;
-    jd.bodyA = built.bodies[j.bodyA];
-    jd.bodyB = built.bodies[j.bodyB];
-    jd.localAnchorA = j.anchor - scene.bodies[j.bodyA].position; // bodies start unrotated
-    jd.localAnchorB = j.anchor - scene.bodies[j.bodyB].position;
-    jd.enableLimit = j.enableLimit;
-    jd.lowerAngle = j.lowerAngle;
-    jd.upperAngle = j.upperAngle;
-    built.world.createJoint(jd);
-  }
-  return built;
-}
-
-std::vector<Transform2f> bodyTransforms(const ImpetusScene& built) {
-  std::vector<Transform2f> out;
-  out.reserve(built.bodies.size());
-  for (const rigid2d::BodyId id : built.bodies) {
-    out.push_back(built.world.transform(id));
-  }
-  return out;
-}
-
-float topSink(const Rigid2dScene& scene, std::span<const Transform2f> transforms) {
-  if (scene.tops.empty()) {
-    return 0.0f;
-  }
-  float sink = -std::numeric_limits<float>::infinity();
-  for (const std::uint32_t top : scene.tops) {
-    sink = std::max(sink, scene.bodies[top].position.y - transforms[top].p.y);
-  }
-  return sink;
-}
-
-float largestOverlap(const Rigid2dScene& scene, std::span<const Transform2f> transforms) {
-  const std::size_t n = scene.shapes.size();
-  std::vector<Geometry> geometry;
-  std::vector<rigid2d::AABB> boxes;
-  geometry.reserve(n);
-  boxes.reserve(n);
-  for (const SceneShape& s : scene.shapes) {
-    geometry.push_back(geometryOf(s));
-    const Transform2f& xf = transforms[s.body];
-    boxes.push_back(std::visit([&](const auto& g) { return rigid2d::computeAABB(g, xf); }, geometry.back()));
-  }
-  // Sort and sweep along x: each shape meets the shapes that start before it ends.
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return boxes[a].lower.x != boxes[b].lower.x ? boxes[a].lower.x < boxes[b].lower.x : a < b;
-  });
-  float deepest = 0.0f;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t a = order[k];
-    const SceneShape& sa = scene.shapes[a];
-    for (std::size_t m = k + 1; m < n && boxes[order[m]].lower.x <= boxes[a].upper.x; ++m) {
-      const std::size_t b = order[m];
-      const SceneShape& sb = scene.shapes[b];
-      if (sa.body == sb.body || boxes[b].lower.y > boxes[a].upper.y || boxes[a].lower.y > boxes[b].upper.y) {
-        continue;
-      }
-      if (scene.bodies[sa.body].type != BodyType::dynamicBody && scene.bodies[sb.body].type != BodyType::dynamicBody) {
-        continue;
-      }
-      deepest = std::max(deepest, -separation(geometry[a], transforms[sa.body], geometry[b], transforms[sb.body]));
-    }
-  }
-  return deepest;
-}
-
-bool allFinite(std::span<const Transform2f> transforms) {
-  return std::all_of(transforms.begin(), transforms.end(), [](const Transform2f& xf) {
-    return std::isfinite(xf.p.x) && std::isfinite(xf.p.y) && std::isfinite(xf.q.c) && std::isfinite(xf.q.s);
-  });
-}
-
-std::size_t dynamicBodyCount(const Rigid2dScene& scene) {
-  return static_cast<std::size_t>(std::count_if(scene.bodies.begin(), scene.bodies.end(),
-                                                [](const SceneBody& b) { return b.type == BodyType::dynamicBody; }));
+                           "' (large_pyramid, many_pyramids, tumbler, smash, joint_grid, ragdolls, pyramid_row, "
+                           "kinematic_tumbler, smash_awake, circle_rain_N or circle_rain_Nk: circle_rain_1k, "
+                           "circle_rain_10k, circle_rain_100k)");
 }
 
 } // namespace impetus::bench

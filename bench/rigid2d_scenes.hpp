@@ -1,10 +1,17 @@
 // The 2D rigid-body scenes of the side-by-side benchmark (bench/impetus_bench.cpp), checked by
 // tests/bench/rigid2d_scenes_test.cpp. A scene is first described as plain data (bodies and their
-// boxes and circles), then built in an engine: here in Impetus' rigid2d::World, and in Box2D 2.4.1
-// by bench/box2d_scenes.hpp from the same description, so both engines get identical geometry.
+// boxes, circles and segments, revolute joints), then built in an engine: here in Impetus'
+// rigid2d::World, in Box2D 2.4.1 by bench/box2d_scenes.hpp and in Box2D v3 by
+// bench/box2d3_scenes.hpp from the same description, so every engine gets identical geometry.
 //
-// Every scene: gravity (0, -10) m/s^2 (the smash: none), density 1 kg/m^2, friction 0.6, no restitution, sleeping
-// off in both engines (what is timed is the solver at work), steps of 1/60 s.
+// Where a name is also a scene of Box2D v3's own benchmark (large_pyramid, many_pyramids,
+// tumbler, smash, joint_grid), the scene is v3's, like for like (box2d3_benchmark_scenes.cpp);
+// Impetus' earlier variants are kept under names of their own (pyramid_row, kinematic_tumbler,
+// smash_awake, circle_rain_N).
+//
+// Every scene: gravity (0, -10) m/s^2 (the smashes: none), density 1 kg/m^2 unless a shape says,
+// friction 0.6, no restitution, steps of 1/60 s; sleeping off in every engine (what is timed is
+// the solver at work) unless the scene says, as v3's smash and tumbler do.
 #pragma once
 
 #include <impetus/math/scalar.hpp>
@@ -20,21 +27,25 @@
 
 namespace impetus::bench {
 
+inline constexpr float sceneDensity = 1.0f; ///< kg/m^2, unless a shape says otherwise
+
 /// A shape of a scene body, in the body frame: a box (half-widths, centre, angle) or a circle.
 struct SceneShape {
-  enum class Kind { box, circle };
+  enum class Kind { box, circle, segment };
   Kind kind = Kind::box;
   std::uint32_t body = 0; ///< index into Rigid2dScene::bodies
   Vec2f center;           ///< box or circle centre in the body frame, m
   float halfWidth = 0.0f; ///< box, m
   float halfHeight = 0.0f;
-  float angle = 0.0f;     ///< box rotation in the body frame, rad
-  float radius = 0.0f;    ///< circle, m
-  std::int32_t group = 0; ///< collision group (negative: shapes of the group never collide)
+  float angle = 0.0f;           ///< box rotation in the body frame, rad
+  float radius = 0.0f;          ///< circle, m
+  Vec2f point1, point2;         ///< segment (two-sided, on a static body), body frame, m
+  float density = sceneDensity; ///< kg/m^2
+  std::int32_t group = 0;       ///< collision group (negative: shapes of the group never collide)
 };
 
 /// A revolute joint between two bodies at a world point (the scene's initial pose), with
-/// optional angle limits.
+/// optional angle limits and motor.
 struct SceneJoint {
   std::uint32_t bodyA = 0;
   std::uint32_t bodyB = 0;
@@ -42,6 +53,9 @@ struct SceneJoint {
   bool enableLimit = false;
   float lowerAngle = 0.0f; ///< rad
   float upperAngle = 0.0f; ///< rad
+  bool enableMotor = false;
+  float motorSpeed = 0.0f;     ///< rad/s of B relative to A
+  float maxMotorTorque = 0.0f; ///< N m
 };
 
 struct SceneBody {
@@ -50,6 +64,7 @@ struct SceneBody {
   float angularVelocity = 0.0f; ///< rad/s (the tumbler's kinematic drum)
   Vec2f linearVelocity;         ///< m/s (the smash's projectile)
   bool bullet = false;          ///< continuous collision against dynamic bodies (the smash's projectile)
+  bool awake = true;            ///< false: starts asleep (v3's smash), where the scene sleeps
 };
 
 /// A scene as plain data: what both engines build.
@@ -61,11 +76,11 @@ struct Rigid2dScene {
   /// Bodies whose sinking is the quality figure (the top box of each pyramid); may be empty.
   std::vector<std::uint32_t> tops;
   int defaultSteps = 500;      ///< steps of 1/60 s the benchmark runs by default
-  Vec2f gravity{0.0f, -10.0f}; ///< m/s^2 (zero for the smash)
+  Vec2f gravity{0.0f, -10.0f}; ///< m/s^2 (zero for the smashes)
+  bool enableSleep = false;    ///< bodies may sleep, in every engine (v3's smash and tumbler)
 };
 
 inline constexpr float sceneTimeStep = 1.0f / 60.0f; ///< s
-inline constexpr float sceneDensity = 1.0f;          ///< kg/m^2
 inline constexpr float sceneFriction = 0.6f;
 inline constexpr Vec2f sceneGravity{0.0f, -10.0f}; ///< m/s^2
 
@@ -78,13 +93,21 @@ inline constexpr float pyramidBoxHalfSize = 0.5f;
 /// y = i + 0.5, centred on x = 0. The top box is the quality figure.
 [[nodiscard]] Rigid2dScene largePyramidScene(int base = 100);
 
-/// "many_pyramids": `count` pyramids of base `base` (default 10 of base 20: 2100 boxes), side by
+/// "pyramid_row": `count` pyramids of base `base` (default 10 of base 20: 2100 boxes), side by
 /// side one box apart on one ground box (top at y = 0, 10 m wider than the row on each side).
-inline constexpr int manyPyramidsCount = 10;
-inline constexpr int manyPyramidsBase = 20;
-[[nodiscard]] Rigid2dScene manyPyramidsScene(int count = manyPyramidsCount, int base = manyPyramidsBase);
+inline constexpr int pyramidRowCount = 10;
+inline constexpr int pyramidRowBase = 20;
+[[nodiscard]] Rigid2dScene pyramidRowScene(int count = pyramidRowCount, int base = pyramidRowBase);
 
-/// "rain_N": `count` circles of radius 0.25 m dropped at rest into a wide open box: a floor
+/// "many_pyramids" (Box2D v3's): `rows` x `columns` pyramids of base 10 (default 20 x 20: 22,000
+/// boxes of half-size 0.5 m), each row of pyramids on a two-sided segment floor 220 m wide, the
+/// floors 11 m apart; within a row the pyramids stand one box apart. 200 steps.
+inline constexpr int manyPyramidsRows = 20;
+inline constexpr int manyPyramidsColumns = 20;
+inline constexpr int manyPyramidsBase = 10;
+[[nodiscard]] Rigid2dScene manyPyramidsScene(int rows = manyPyramidsRows, int columns = manyPyramidsColumns);
+
+/// "circle_rain_N": `count` circles of radius 0.25 m dropped at rest into a wide open box: a floor
 /// (top at y = 0) and two walls 10 m tall. The circles stand in rainRows rows (rainRowSpacing apart,
 /// the lowest at y = 1 m) and ceil(count / rainRows) columns (rainColumnSpacing apart); every other
 /// row is shifted by half a column, and every circle by up to 5 cm more (a fixed low-discrepancy
@@ -95,22 +118,35 @@ inline constexpr float rainRadius = 0.25f;
 inline constexpr std::size_t rainRows = 10;
 inline constexpr float rainRowSpacing = 0.75f;   ///< m
 inline constexpr float rainColumnSpacing = 0.6f; ///< m
-[[nodiscard]] Rigid2dScene rainScene(std::size_t count);
+[[nodiscard]] Rigid2dScene circleRainScene(std::size_t count);
 
-/// "tumbler" (as Box2D v3's benchmark): a kinematic drum at (0, 10) m, a hollow square of four
-/// boxes (inner side 19 m, walls 1 m thick) turning at 25 degrees per second, holding a grid of
-/// grid x grid (default 45 x 45 = 2025) boxes of half-size 0.125 m 0.4 m apart. Box2D v3 turns
-/// a dynamic drum with a revolute motor; a kinematic body with an angular velocity is the same
-/// motion without joints (which Impetus does not have yet).
+/// "kinematic_tumbler": a kinematic drum at (0, 10) m, a hollow square of four boxes (inner
+/// side 19 m, walls 1 m thick) turning at 25 degrees per second, holding a grid of grid x grid
+/// (default 45 x 45 = 2025) boxes of half-size 0.125 m 0.4 m apart. 500 steps, no sleeping.
 inline constexpr int tumblerGrid = 45;
 inline constexpr float tumblerSpeed = 25.0f * pi<float> / 180.0f; ///< rad/s
+[[nodiscard]] Rigid2dScene kinematicTumblerScene(int grid = tumblerGrid);
+
+/// "tumbler" (Box2D v3's): the same drum and boxes, but the drum is dynamic (density 50 kg/m^2)
+/// and turned by a revolute joint's motor (25 degrees per second, at most 10^8 N m) to a static
+/// ground body; bodies may sleep. 750 steps.
+inline constexpr float tumblerDrumDensity = 50.0f;  ///< kg/m^2
+inline constexpr float tumblerMotorTorque = 1.0e8f; ///< N m: enough to keep the speed whatever the load
 [[nodiscard]] Rigid2dScene tumblerScene(int grid = tumblerGrid);
 
-/// "smash" (after Box2D v3's): in zero gravity, a block of smashGrid x smashGrid boxes of
-/// half-size 0.1 m, touching, its left face at x = 0 and centred on y = 0, is hit at 40 m/s by a
-/// 4 x 4 m box of the same density (a bullet in both engines) starting 10 m to its left. 300 steps.
+/// "smash_awake": in zero gravity, a block of smashGrid x smashGrid boxes of half-size 0.1 m,
+/// touching, its left face at x = 0 and centred on y = 0, is hit at 40 m/s by a 4 x 4 m box of
+/// the same density (a bullet in every engine) starting 10 m to its left. 300 steps, no sleeping.
 inline constexpr int smashGrid = 60;
-[[nodiscard]] Rigid2dScene smashScene(int grid = smashGrid);
+[[nodiscard]] Rigid2dScene smashAwakeScene(int grid = smashGrid);
+
+/// "smash" (Box2D v3's): in zero gravity, a block of `columns` x `rows` (default 120 x 80 =
+/// 9,600) boxes of half-size 0.2 m, touching, asleep, its left face at x = 29.8 m and centred on
+/// y = 0, is hit at 40 m/s by an 8 x 8 m box of density 8 kg/m^2 starting at x = -20 m (not a
+/// bullet); bodies may sleep, so the block costs little until it is hit. 300 steps.
+inline constexpr int smashColumns = 120;
+inline constexpr int smashRows = 80;
+[[nodiscard]] Rigid2dScene smashScene(int columns = smashColumns, int rows = smashRows);
 
 /// "joint_grid" (after Box2D v3's): grid x grid circles of radius 0.4 m, 1 m apart, each joined
 /// by revolute joints to its neighbours above and to the left; seven circles in the middle of the
@@ -125,11 +161,12 @@ inline constexpr int ragdollColumns = 20;
 inline constexpr int ragdollRows = 15;
 [[nodiscard]] Rigid2dScene ragdollScene(int columns = ragdollColumns, int rows = ragdollRows);
 
-/// Scene names, in the benchmark's order: large_pyramid, many_pyramids, tumbler, rain_1k,
-/// rain_10k, rain_100k.
+/// Scene names, in the benchmark's order: Box2D v3's (large_pyramid, many_pyramids, tumbler,
+/// smash, joint_grid), then Impetus' own (ragdolls, pyramid_row, kinematic_tumbler,
+/// smash_awake, circle_rain_1k, circle_rain_10k, circle_rain_100k).
 [[nodiscard]] std::vector<std::string> rigid2dSceneNames();
-/// The scene of that name (also rain_N and rain_Nk for N or N thousand circles); throws
-/// impetus::Error naming `scene` for an unknown one.
+/// The scene of that name (also circle_rain_N and circle_rain_Nk for N or N thousand circles);
+/// throws impetus::Error naming `scene` for an unknown one.
 [[nodiscard]] Rigid2dScene makeRigid2dScene(std::string_view name);
 
 /// The scene built in Impetus (the default WorldDef, gravity (0, -10) and 4 substeps, with

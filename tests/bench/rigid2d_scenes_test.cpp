@@ -86,9 +86,9 @@ TEST(LargePyramid, built_in_impetus_stays_finite_and_standing) {
   EXPECT_GT(built.world.contactCount(), 200u);
 }
 
-TEST(ManyPyramids, is_ten_pyramids_of_base_twenty_side_by_side) {
-  const bench::Rigid2dScene scene = bench::manyPyramidsScene();
-  EXPECT_EQ(scene.name, "many_pyramids");
+TEST(PyramidRow, is_ten_pyramids_of_base_twenty_side_by_side) {
+  const bench::Rigid2dScene scene = bench::pyramidRowScene();
+  EXPECT_EQ(scene.name, "pyramid_row");
   EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 10u * 210u);
   EXPECT_EQ(countOf(scene, BodyType::staticBody), 1u);
   ASSERT_EQ(scene.tops.size(), 10u);
@@ -106,8 +106,8 @@ TEST(ManyPyramids, is_ten_pyramids_of_base_twenty_side_by_side) {
   }
 }
 
-TEST(ManyPyramids, built_in_impetus_stay_finite_and_standing) {
-  const bench::Rigid2dScene scene = bench::manyPyramidsScene(3, 10);
+TEST(PyramidRow, built_in_impetus_stay_finite_and_standing) {
+  const bench::Rigid2dScene scene = bench::pyramidRowScene(3, 10);
   bench::ImpetusScene built = bench::buildImpetusScene(scene);
   EXPECT_EQ(built.world.bodyCount(), 1u + 3u * 55u);
   step(built, 60);
@@ -118,7 +118,7 @@ TEST(ManyPyramids, built_in_impetus_stay_finite_and_standing) {
 
 TEST(Rain, has_the_requested_circles_in_an_open_box_as_wide_as_the_columns) {
   for (const std::size_t count : {1u, 10u, 1000u, 10000u, 100000u}) {
-    const bench::Rigid2dScene scene = bench::rainScene(count);
+    const bench::Rigid2dScene scene = bench::circleRainScene(count);
     EXPECT_EQ(countOf(scene, BodyType::dynamicBody), count);
     EXPECT_EQ(countOf(scene, BodyType::staticBody), 1u);
     EXPECT_EQ(scene.shapes.size(), count + 3u); // floor, two walls
@@ -133,17 +133,17 @@ TEST(Rain, has_the_requested_circles_in_an_open_box_as_wide_as_the_columns) {
       EXPECT_GE(p.y, 1.0f);
     }
   }
-  EXPECT_EQ(bench::rainScene(1000).name, "rain_1k");
-  EXPECT_EQ(bench::rainScene(100000).name, "rain_100k");
+  EXPECT_EQ(bench::circleRainScene(1000).name, "circle_rain_1k");
+  EXPECT_EQ(bench::circleRainScene(100000).name, "circle_rain_100k");
   // The box grows with the count, so the pile is equally deep: 10 times the circles, about 10
   // times the width.
-  const float w1 = bench::rainScene(1000).shapes[0].halfWidth;
-  const float w10 = bench::rainScene(10000).shapes[0].halfWidth;
+  const float w1 = bench::circleRainScene(1000).shapes[0].halfWidth;
+  const float w10 = bench::circleRainScene(10000).shapes[0].halfWidth;
   EXPECT_NEAR(w10 / w1, 10.0f, 0.5f);
 }
 
 TEST(Rain, circles_land_and_stay_in_the_box) {
-  const bench::Rigid2dScene scene = bench::rainScene(500);
+  const bench::Rigid2dScene scene = bench::circleRainScene(500);
   std::vector<Transform2f> start;
   for (const bench::SceneBody& b : scene.bodies) {
     start.push_back({b.position, impetus::Rot2f::identity()});
@@ -164,8 +164,8 @@ TEST(Rain, circles_land_and_stay_in_the_box) {
   EXPECT_LT(bench::largestOverlap(scene, xf), 0.05f);
 }
 
-TEST(Tumbler, is_a_turning_kinematic_drum_holding_a_grid_of_small_boxes) {
-  const bench::Rigid2dScene scene = bench::tumblerScene();
+TEST(KinematicTumbler, is_a_turning_kinematic_drum_holding_a_grid_of_small_boxes) {
+  const bench::Rigid2dScene scene = bench::kinematicTumblerScene();
   EXPECT_EQ(countOf(scene, BodyType::kinematicBody), 1u);
   EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 45u * 45u);
   EXPECT_EQ(scene.shapes.size(), 4u + 45u * 45u);
@@ -176,7 +176,7 @@ TEST(Tumbler, is_a_turning_kinematic_drum_holding_a_grid_of_small_boxes) {
   }
   EXPECT_FLOAT_EQ(bench::largestOverlap(scene, start), 0.0f);
 
-  const bench::Rigid2dScene small = bench::tumblerScene(10);
+  const bench::Rigid2dScene small = bench::kinematicTumblerScene(10);
   bench::ImpetusScene built = bench::buildImpetusScene(small);
   step(built, 120);
   const std::vector<Transform2f> xf = bench::bodyTransforms(built);
@@ -190,9 +190,9 @@ TEST(Tumbler, is_a_turning_kinematic_drum_holding_a_grid_of_small_boxes) {
   }
 }
 
-TEST(Smash, is_a_block_of_small_boxes_and_a_fast_big_box_in_zero_gravity) {
-  const bench::Rigid2dScene scene = bench::smashScene(20);
-  EXPECT_EQ(scene.name, "smash");
+TEST(SmashAwake, is_a_block_of_small_boxes_and_a_fast_big_box_in_zero_gravity) {
+  const bench::Rigid2dScene scene = bench::smashAwakeScene(20);
+  EXPECT_EQ(scene.name, "smash_awake");
   EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 20u * 20u + 1u);
   EXPECT_FLOAT_EQ(scene.gravity.y, 0.0f);
   EXPECT_FLOAT_EQ(scene.bodies.back().linearVelocity.x, 40.0f);
@@ -206,8 +206,8 @@ TEST(Smash, is_a_block_of_small_boxes_and_a_fast_big_box_in_zero_gravity) {
 
 // Nothing is static and there is no gravity: the smash conserves linear momentum (contact
 // impulses come in equal and opposite pairs), whatever the solver does with energy.
-TEST(Smash, built_in_impetus_conserves_momentum) {
-  const bench::Rigid2dScene scene = bench::smashScene(20);
+TEST(SmashAwake, built_in_impetus_conserves_momentum) {
+  const bench::Rigid2dScene scene = bench::smashAwakeScene(20);
   bench::ImpetusScene built = bench::buildImpetusScene(scene);
   const auto momentum = [&] {
     impetus::Vec2d p;

@@ -1,5 +1,5 @@
 // Engine/Pyramid: the benchmark's pyramids of boxes (bench::largePyramidScene and
-// manyPyramidsScene) on the soft-step solver. A stack is the hardest test of a contact solver:
+// pyramidRowScene) on the soft-step solver. A stack is the hardest test of a contact solver:
 // every box's weight passes through the ones below, and an iterative solver that does not converge
 // lets the stack sink or slide. The plots are the benchmark's quality figures: how far the top box
 // has sunk (m, from its start) and the deepest overlap between two boxes (m), with the kinetic
@@ -14,7 +14,7 @@ namespace {
 class Pyramid final : public BenchSceneSample {
 public:
   void setup() override {
-    buildScene(many_ ? bench::manyPyramidsScene(count_, base_) : bench::largePyramidScene(base_));
+    buildScene(many_ ? bench::pyramidRowScene(count_, base_) : bench::largePyramidScene(base_));
     sink_.clear();
     overlap_.clear();
     energy_.clear();
@@ -53,7 +53,7 @@ protected:
 private:
   bool many_ = false;
   int base_ = 20;
-  int count_ = bench::manyPyramidsCount;
+  int count_ = bench::pyramidRowCount;
   long steps_ = 0;
   History sink_;
   History overlap_{100};

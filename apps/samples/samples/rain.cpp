@@ -1,4 +1,4 @@
-// Engine/Rain: the benchmark's rain (bench::rainScene): circles dropped at rest into an open box.
+// Engine/Rain: the benchmark's rain (bench::circleRainScene): circles dropped at rest into an open box.
 // Thousands of bodies landing on each other are the broadphase's test (the dynamic AABB tree finds
 // the pairs) and the solver's (deep piles); the plots show the kinetic energy, which the
 // collisions dissipate (no restitution), and the number of touching contacts.
@@ -12,7 +12,7 @@ namespace {
 class Rain final : public BenchSceneSample {
 public:
   void setup() override {
-    buildScene(bench::rainScene(static_cast<std::size_t>(count_)));
+    buildScene(bench::circleRainScene(static_cast<std::size_t>(count_)));
     energy_.clear();
     contacts_.clear();
   }

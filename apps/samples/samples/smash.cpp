@@ -1,4 +1,4 @@
-// Engine/Smash: the benchmark's smash (bench::smashScene): in zero gravity a 4 m box at 40 m/s hits
+// Engine/Smash: the benchmark's smash (bench::smashAwakeScene): in zero gravity a 4 m box at 40 m/s hits
 // a block of small boxes. At 40 m/s the projectile moves 0.67 m a step, more than three of the
 // block's 0.2 m boxes: without continuous collision (a bullet: time of impact against dynamic
 // bodies too) it can pass through the first boxes before any contact is found. Switch "bullet" off
@@ -16,7 +16,7 @@ public:
   /// Wide enough for the debris: the block flies apart at several metres a second.
   [[nodiscard]] CameraView initialView() const override { return {{2.0f, 0.0f}, 10.0f, 16.0f}; }
   void setup() override {
-    bench::Rigid2dScene scene = bench::smashScene(grid_);
+    bench::Rigid2dScene scene = bench::smashAwakeScene(grid_);
     projectileIndex_ = 0;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
       if (lengthSquared(scene.bodies[i].linearVelocity) > 0.0f) {

@@ -1,4 +1,4 @@
-// Engine/Tumbler: the benchmark's tumbler (bench::tumblerScene): a kinematic drum turning at a set
+// Engine/Tumbler: the benchmark's tumbler (bench::kinematicTumblerScene): a kinematic drum turning at a set
 // rate stirs a grid of small boxes. A kinematic body moves at its velocity whatever hits it (it has
 // infinite mass for the solver), so the drum feeds energy in at every contact; the plots show the
 // boxes' kinetic energy and how high the pile is carried (the mean height of the boxes above the
@@ -16,7 +16,7 @@ constexpr float degrees = pi<float> / 180.0f;
 class Tumbler final : public BenchSceneSample {
 public:
   void setup() override {
-    buildScene(bench::tumblerScene(grid_));
+    buildScene(bench::kinematicTumblerScene(grid_));
     drum_ = {};
     for (std::size_t i = 0; i < scene().bodies.size(); ++i) {
       if (scene().bodies[i].type == rigid2d::BodyType::kinematicBody) {

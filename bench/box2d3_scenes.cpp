@@ -1,0 +1,128 @@
+// The 2D benchmark scenes built in Box2D v3 (see box2d3_scenes.hpp). Compiled only when CMake is
+// pointed at a Box2D v3 build (IMPETUS_BOX2D3_DIR), with its headers ahead of Debian's 2.4.1.
+#include "box2d3_scenes.hpp"
+
+#include <box2d/box2d.h>
+
+namespace impetus::bench {
+
+struct Box2D3Scene::Impl {
+  b2WorldId world{};
+  std::vector<b2BodyId> bodies;
+};
+
+Box2D3Scene::Box2D3Scene(const Rigid2dScene& scene, int workers, bool continuous) : impl_(std::make_unique<Impl>()) {
+  b2WorldDef wd = b2DefaultWorldDef();
+  wd.gravity = {scene.gravity.x, scene.gravity.y};
+  wd.enableSleep = scene.enableSleep;
+  wd.enableContinuous = continuous;
+  wd.workerCount = workers; // above 1: Box2D v3's own threads and scheduler
+  impl_->world = b2CreateWorld(&wd);
+  impl_->bodies.reserve(scene.bodies.size());
+  for (const SceneBody& b : scene.bodies) {
+    b2BodyDef bd = b2DefaultBodyDef();
+    switch (b.type) {
+    case rigid2d::BodyType::staticBody:
+      bd.type = b2_staticBody;
+      break;
+    case rigid2d::BodyType::kinematicBody:
+      bd.type = b2_kinematicBody;
+      break;
+    case rigid2d::BodyType::dynamicBody:
+      bd.type = b2_dynamicBody;
+      break;
+    }
+    bd.position = {b.position.x, b.position.y};
+    bd.linearVelocity = {b.linearVelocity.x, b.linearVelocity.y};
+    bd.angularVelocity = b.angularVelocity;
+    bd.isBullet = b.bullet;
+    bd.enableSleep = scene.enableSleep;
+    bd.isAwake = b.awake;
+    impl_->bodies.push_back(b2CreateBody(impl_->world, &bd));
+  }
+  for (const SceneShape& s : scene.shapes) {
+    b2ShapeDef sd = b2DefaultShapeDef();
+    sd.density = s.density;
+    sd.material.friction = sceneFriction;
+    sd.material.restitution = 0.0f;
+    sd.filter.groupIndex = s.group;
+    const b2BodyId body = impl_->bodies[s.body];
+    switch (s.kind) {
+    case SceneShape::Kind::circle: {
+      const b2Circle circle{{s.center.x, s.center.y}, s.radius};
+      b2CreateCircleShape(body, &sd, &circle);
+      break;
+    }
+    case SceneShape::Kind::segment: {
+      const b2Segment segment{{s.point1.x, s.point1.y}, {s.point2.x, s.point2.y}};
+      b2CreateSegmentShape(body, &sd, &segment);
+      break;
+    }
+    case SceneShape::Kind::box: {
+      const b2Polygon box = b2MakeOffsetBox(s.halfWidth, s.halfHeight, {s.center.x, s.center.y}, b2MakeRot(s.angle));
+      b2CreatePolygonShape(body, &sd, &box);
+      break;
+    }
+    }
+  }
+  for (const SceneJoint& j : scene.joints) {
+    // The scene's bodies start unrotated: the anchor's local point is its offset from the origin.
+    const SceneBody& a = scene.bodies[j.bodyA];
+    const SceneBody& b = scene.bodies[j.bodyB];
+    b2RevoluteJointDef jd = b2DefaultRevoluteJointDef();
+    jd.base.bodyIdA = impl_->bodies[j.bodyA];
+    jd.base.bodyIdB = impl_->bodies[j.bodyB];
+    jd.base.localFrameA.p = {j.anchor.x - a.position.x, j.anchor.y - a.position.y};
+    jd.base.localFrameB.p = {j.anchor.x - b.position.x, j.anchor.y - b.position.y};
+    jd.enableLimit = j.enableLimit;
+    jd.lowerAngle = j.lowerAngle;
+    jd.upperAngle = j.upperAngle;
+    jd.enableMotor = j.enableMotor;
+    jd.motorSpeed = j.motorSpeed;
+    jd.maxMotorTorque = j.maxMotorTorque;
+    b2CreateRevoluteJoint(impl_->world, &jd);
+  }
+}
+
+Box2D3Scene::~Box2D3Scene() { b2DestroyWorld(impl_->world); }
+
+void Box2D3Scene::step() { b2World_Step(impl_->world, sceneTimeStep, box2d3Substeps); }
+
+float Box2D3Scene::height(std::uint32_t body) const {
+  return static_cast<float>(b2Body_GetPosition(impl_->bodies[body]).y);
+}
+
+std::vector<Transform2f> Box2D3Scene::transforms() const {
+  std::vector<Transform2f> out;
+  out.reserve(impl_->bodies.size());
+  for (const b2BodyId body : impl_->bodies) {
+    const b2WorldTransform xf = b2Body_GetTransform(body);
+    out.push_back({{static_cast<float>(xf.p.x), static_cast<float>(xf.p.y)}, {xf.q.c, xf.q.s}});
+  }
+  return out;
+}
+
+std::size_t Box2D3Scene::touchingContacts() const {
+  // Each body lists its touching contacts (Box2D v3 keeps only those with points); a contact is
+  // counted at its first shape's body, so once.
+  std::size_t count = 0;
+  std::vector<b2ContactData> data;
+  for (const b2BodyId body : impl_->bodies) {
+    data.resize(static_cast<std::size_t>(b2Body_GetContactCapacity(body)));
+    const int n = b2Body_GetContactData(body, data.data(), static_cast<int>(data.size()));
+    for (int i = 0; i < n; ++i) {
+      const b2ContactData& c = data[static_cast<std::size_t>(i)];
+      if (c.manifold.pointCount > 0 && B2_ID_EQUALS(b2Shape_GetBody(c.shapeIdA), body)) {
+        ++count;
+      }
+    }
+  }
+  return count;
+}
+
+std::string Box2D3Scene::version() {
+  const b2Version v = b2GetVersion();
+  return "box2d " + std::to_string(v.major) + "." + std::to_string(v.minor) + "." + std::to_string(v.revision);
+}
+
+} // namespace impetus::bench
