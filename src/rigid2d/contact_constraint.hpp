@@ -38,6 +38,7 @@ struct ContactConstraint {
   float rollingResistance = 0.0f;
   float rollingMass = 0.0f;
   float rollingImpulse = 0.0f;
+  float tangentSpeed = 0.0f; ///< m/s: the relative sliding speed friction drives toward
   Softness softness;
   int pointCount = 0;
   std::array<ConstraintPoint, 2> points{};
@@ -69,6 +70,7 @@ struct ContactConstraint {
   const float kRolling = c.iA + c.iB;
   c.rollingMass = (c.rollingResistance > 0.0f && kRolling > 0.0f) ? 1.0f / kRolling : 0.0f;
   c.rollingImpulse = contact.rollingImpulse;
+  c.tangentSpeed = contact.tangentSpeed;
   c.softness = (c.mA == 0.0f || c.mB == 0.0f) ? staticSoft : soft;
   c.pointCount = m.pointCount;
   const Vec2f tangent{m.normal.y, -m.normal.x};

@@ -172,7 +172,7 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
   const Vec2f tangent{c.normal.y, -c.normal.x};
   for (int k = 0; k < c.pointCount; ++k) {
     ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-    const float vt = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), tangent);
+    const float vt = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), tangent) - c.tangentSpeed;
     const float limit = c.friction * p.normalImpulse;
     const float total = std::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
     const float applied = total - p.tangentImpulse;

@@ -20,7 +20,7 @@ struct ContactConstraintWide {
   std::array<std::uint32_t, simdWidth> indexA{}, indexB{};
   FloatW invMassA, invMassB, invIA, invIB;
   FloatW normalX, normalY;
-  FloatW friction, restitution, rollingResistance, rollingMass, rollingImpulse;
+  FloatW friction, restitution, rollingResistance, rollingMass, rollingImpulse, tangentSpeed;
   FloatW biasRate, massScale, impulseScale;
   struct Point {
     FloatW rAx, rAy, rBx, rBy;
@@ -91,6 +91,7 @@ struct BodiesW {
   lane(wc.rollingResistance, i) = c.rollingResistance;
   lane(wc.rollingMass, i) = c.rollingMass;
   lane(wc.rollingImpulse, i) = c.rollingImpulse;
+  lane(wc.tangentSpeed, i) = c.tangentSpeed;
   lane(wc.biasRate, i) = c.softness.biasRate;
   lane(wc.massScale, i) = c.softness.massScale;
   lane(wc.impulseScale, i) = c.softness.impulseScale;
@@ -194,7 +195,7 @@ void applyW(BodiesW& a, BodiesW& b, const ContactConstraintWide& c, const Contac
   const FloatW tx = c.normalY;
   const FloatW ty = -c.normalX;
   for (ContactConstraintWide::Point& p : c.points) {
-    const FloatW vt = relativeVelocity(a, b, p, tx, ty);
+    const FloatW vt = relativeVelocity(a, b, p, tx, ty) - c.tangentSpeed;
     const FloatW limit = c.friction * p.normalImpulse;
     const FloatW total = maxW(minW(p.tangentImpulse - p.tangentMass * vt, limit), -limit);
     const FloatW applied = total - p.tangentImpulse;

@@ -141,10 +141,21 @@ void createContact(WorldState& w, std::uint64_t key) {
   // Torque per unit normal force: the pair's coefficient times the radius that rolls.
   c.rollingResistance =
       std::max(a.rollingResistance, b.rollingResistance) * std::max(rollingRadius(a), rollingRadius(b));
+  c.tangentSpeed = a.tangentSpeed + b.tangentSpeed;
   c.sensor = a.sensor || b.sensor;
-  c.reusable = hasSharpCorners(a) && hasSharpCorners(b);
+  c.preSolve = !c.sensor && (a.preSolve || b.preSolve);
+  // A carried manifold skips the collide pass, where the pre-solve callback is asked.
+  c.reusable = hasSharpCorners(a) && hasSharpCorners(b) && !c.preSolve;
   c.alive = true;
   w.contactByPair.insert(key, slot);
+}
+
+/// Whether the game's custom filter lets a new pair (key: lower shape slot, higher) collide:
+/// asked only when either shape enables it.
+bool passesCustomFilter(const WorldState& w, std::uint64_t key) {
+  const Shape& a = w.shapes[static_cast<std::uint32_t>(key >> 32)];
+  const Shape& b = w.shapes[static_cast<std::uint32_t>(key & 0xffffffffU)];
+  return !(a.customFiltering || b.customFiltering) || !w.customFilter || w.customFilter(a.id, b.id);
 }
 
 /// Finds new pairs for the shapes whose fat boxes were (re)inserted, and drops contacts whose
@@ -183,7 +194,7 @@ void updatePairs(WorldState& w) {
   std::sort(w.newPairs.begin(), w.newPairs.end()); // deterministic creation order
   w.newPairs.erase(std::unique(w.newPairs.begin(), w.newPairs.end()), w.newPairs.end());
   for (std::uint64_t key : w.newPairs) {
-    if (!w.contactByPair.contains(key)) {
+    if (!w.contactByPair.contains(key) && passesCustomFilter(w, key)) {
       createContact(w, key);
     }
   }
@@ -234,6 +245,10 @@ bool collideContacts(WorldState& w) {
       }
       const Manifold old = contact.manifold;
       contact.manifold = collide(w.shapes[contact.shapeA], bodyA.transform, w.shapes[contact.shapeB], bodyB.transform);
+      if (contact.preSolve && contact.manifold.pointCount > 0 && w.preSolve &&
+          !w.preSolve(w.shapes[contact.shapeA].id, w.shapes[contact.shapeB].id, contact.manifold)) {
+        contact.manifold.pointCount = 0; // not solved, not touching, this step
+      }
       const bool touching = contact.manifold.pointCount > 0;
       if (touching) {
         recordManifoldFrame(contact, bodyA.transform, bodyB.transform);
@@ -440,10 +455,19 @@ void World::step(float dt) {
   if (w.def.enableSleep) {
     detail::updateSleep(w, dt);
   }
+  // The bodies the step moved (the solver's awake list, in slot order), and which fell asleep.
+  w.bodyMoveEvents.clear();
+  for (const std::uint32_t slot : w.awakeBodies) {
+    const Body& b = w.bodies[slot];
+    w.bodyMoveEvents.push_back({b.id, b.transform, !b.awake, b.userData});
+  }
 }
 
 const ContactEvents& World::contactEvents() const noexcept { return impl_->contactEvents; }
 const SensorEvents& World::sensorEvents() const noexcept { return impl_->sensorEvents; }
+const std::vector<BodyMoveEvent>& World::bodyMoveEvents() const noexcept { return impl_->bodyMoveEvents; }
+void World::setCustomFilter(CustomFilterFcn filter) { impl_->customFilter = std::move(filter); }
+void World::setPreSolve(PreSolveFcn preSolve) { impl_->preSolve = std::move(preSolve); }
 
 namespace detail {
 

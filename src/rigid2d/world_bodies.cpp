@@ -145,6 +145,9 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
   requireNonNegative(def.density, "density");
   requireNonNegative(def.friction, "friction");
   requireNonNegative(def.rollingResistance, "rollingResistance");
+  if (!std::isfinite(def.tangentSpeed)) {
+    throwInvalid("tangentSpeed", def.tangentSpeed, "must be a finite speed (m/s)");
+  }
   if (!(def.restitution >= 0.0f && def.restitution <= 1.0f)) {
     throwInvalid("restitution", def.restitution, "must be in [0, 1]");
   }
@@ -172,6 +175,9 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
   s.density = def.density;
   s.friction = def.friction;
   s.rollingResistance = def.rollingResistance;
+  s.tangentSpeed = def.tangentSpeed;
+  s.customFiltering = def.enableCustomFiltering;
+  s.preSolve = def.enablePreSolveEvents;
   s.restitution = def.restitution;
   s.filter = def.filter;
   s.sensor = def.isSensor;

@@ -46,7 +46,10 @@ struct Shape {
   /// Rolling resistance torque per unit normal force, m: the coefficient times the radius the
   /// shape rolls on (0 for shapes that do not roll).
   float rollingResistance = 0.0f;
+  float tangentSpeed = 0.0f; ///< m/s, the surface's (ShapeDef::tangentSpeed)
   Filter filter;
+  bool customFiltering = false; ///< ShapeDef::enableCustomFiltering
+  bool preSolve = false;        ///< ShapeDef::enablePreSolveEvents
   bool sensor = false;
   std::uint64_t userData = 0;
   std::int32_t proxy = DynamicTree::nullNode;
@@ -116,12 +119,14 @@ struct Contact {
   float restitution = 0.0f;
   float rollingResistance = 0.0f; ///< m (torque per unit normal force)
   float rollingImpulse = 0.0f;    ///< solver state, N m s (warm start)
+  float tangentSpeed = 0.0f;      ///< the surfaces' sliding speed friction drives toward, m/s
   float approachSpeed = 0.0f;     ///< the solver's fastest impact this step, m/s (for hit events)
   /// Each point's normal approach speed before the step (m/s, positive approaching): what a hit
   /// event reports, unaffected by the order the points are solved in.
   std::array<float, 2> approachBefore{};
   int fastestPoint = 0;
   bool sensor = false;   ///< either shape is a sensor: events only, no response
+  bool preSolve = false; ///< either shape asks the pre-solve callback
   bool reusable = false; ///< both shapes have sharp corners: the manifold may be carried (manifold_reuse.cpp)
   bool alive = false;
   ManifoldFrame frame; ///< cold: read by the collide pass only (after the solver's fields)
@@ -280,6 +285,9 @@ struct WorldState {
   SensorEvents sensorEvents;
   ContactEvents pendingEvents; ///< raised between steps (destroyed bodies): reported by the next step
   SensorEvents pendingSensorEvents;
+  std::vector<BodyMoveEvent> bodyMoveEvents;
+  CustomFilterFcn customFilter;
+  PreSolveFcn preSolve;
 
   // The item a live id names; an id that was destroyed or never made is an impetus::Error
   // naming "body id", "shape id" or "joint id".

@@ -50,7 +50,19 @@ struct ShapeDef {
   /// rolling on this shape feels a torque c_rr N r against its rolling (r its radius). Typical:
   /// 0.001 (steel on steel) to 0.3 (tyre on sand). The pair uses the larger of the two.
   float rollingResistance = 0.0f;
+  /// The speed of the shape's surface along itself, m/s, as a conveyor belt's (Box2D v3's
+  /// tangentSpeed): friction drives what touches it toward this relative sliding speed. Positive
+  /// runs clockwise around the shape, so a belt lying on the ground carries bodies toward +x.
+  /// The soft step only; the pair's speeds add.
+  float tangentSpeed = 0.0f;
   Filter filter;
+  /// Ask the world's custom filter (World::setCustomFilter) whether this shape's new pairs
+  /// collide. Either shape of a pair asking is enough.
+  bool enableCustomFiltering = false;
+  /// Ask the world's pre-solve callback (World::setPreSolve) before each step's solve whether
+  /// this shape's touching contacts are solved (one-way platforms). Either shape asking is enough;
+  /// such contacts are collided afresh every step (their manifolds are never carried).
+  bool enablePreSolveEvents = false;
   bool isSensor = false; ///< detects overlap (sensor events), no collision response
   std::uint64_t userData = 0;
 };

@@ -53,6 +53,27 @@ struct ContactHitEvent {
   Vec2f normal;               ///< from A to B
   float approachSpeed = 0.0f; ///< m/s, > 0
 };
+/// A body that moved this step (awake, not static), or fell asleep at its end: where to draw it.
+struct BodyMoveEvent {
+  BodyId body;
+  Transform2f transform; ///< of the body origin, at the end of the step
+  bool fellAsleep = false;
+  std::uint64_t userData = 0; ///< the body's (BodyDef::userData)
+};
+
+/// Game rules for which shapes collide, beyond their filters (Box2D v3's custom filter): asked
+/// when the broadphase finds a new pair (a shape's fattened box moved onto the other's), their
+/// filters let them collide and either shape enables it (ShapeDef::enableCustomFiltering);
+/// false: no contact, until the broadphase finds the pair again. A pair already in contact is
+/// not asked again. Called on the stepping thread, the lower shape slot first.
+using CustomFilterFcn = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
+/// Asked each step, before the solve, for every touching contact of a shape that enables it
+/// (ShapeDef::enablePreSolveEvents), with the contact's fresh manifold (normal from A to B);
+/// false: not solved this step, and not touching (a one-way platform lets a body through from
+/// below). Called from the step's worker threads, for several contacts at once: it must be
+/// thread-safe, and it may read the world but not change it.
+using PreSolveFcn = std::function<bool(ShapeId shapeA, ShapeId shapeB, const Manifold& manifold)>;
+
 struct ContactEvents {
   std::vector<ContactBeginEvent> begins;
   std::vector<ContactEndEvent> ends;
@@ -249,6 +270,14 @@ public:
   /// Events of the last step, in a fixed order (valid until the next step).
   [[nodiscard]] const ContactEvents& contactEvents() const noexcept;
   [[nodiscard]] const SensorEvents& sensorEvents() const noexcept;
+  /// The bodies that moved in the last step (and those that fell asleep at its end), in body
+  /// slot order: what a game copies into its renderer's transforms (Box2D v3's move events).
+  [[nodiscard]] const std::vector<BodyMoveEvent>& bodyMoveEvents() const noexcept;
+
+  /// The custom filter (CustomFilterFcn) and the pre-solve callback (PreSolveFcn); an empty
+  /// function removes one. Neither may throw.
+  void setCustomFilter(CustomFilterFcn filter);
+  void setPreSolve(PreSolveFcn preSolve);
 
   [[nodiscard]] const WorldDef& settings() const noexcept;
   /// How many contacts the soft step solves at once (8 with AVX2, 4 with SSE2) and the name of
