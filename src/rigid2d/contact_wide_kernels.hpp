@@ -9,9 +9,10 @@
 #pragma once
 
 #include "rigid2d/contact_constraint.hpp"
-#include "rigid2d/simd.hpp"
+#include "solver/simd.hpp"
 
 namespace impetus::rigid2d::detail {
+using namespace solver; // the lanes (FloatW) and their operations
 namespace {
 
 /// `simdWidth` contacts in SIMD lanes. Unused lanes point at the static state with zero masses, so

@@ -4,6 +4,7 @@
 // (sleeping), continuous.cpp, world_queries.cpp and snapshot.cpp.
 #pragma once
 
+#include "solver/softness.hpp"
 #include <impetus/core/id_pool.hpp>
 #include <impetus/core/task_runner.hpp>
 #include <impetus/error.hpp>
@@ -306,26 +307,8 @@ struct WorldState {
   void parallelFor(std::uint32_t count, std::uint32_t minRange, const TaskRunner::RangeTask& task) const;
 };
 
-/// Soft constraint coefficients for a spring of `hertz` and damping ratio `zeta` over a
-/// substep h (Erin Catto, "Solver2D" soft step): the bias rate (1/s) that turns a position
-/// error into a velocity target, and the mass and impulse scales that make the constraint a
-/// spring-damper solved implicitly instead of rigid. Zero hertz: rigid (no bias, full mass).
-struct Softness {
-  float biasRate = 0.0f;
-  float massScale = 1.0f;
-  float impulseScale = 0.0f;
-};
-
-[[nodiscard]] inline Softness makeSoft(float hertz, float zeta, float h) {
-  if (hertz == 0.0f) {
-    return {};
-  }
-  const float omega = 2.0f * pi<float> * hertz;
-  const float a1 = 2.0f * zeta + h * omega;
-  const float a2 = h * omega * a1;
-  const float a3 = 1.0f / (1.0f + a2);
-  return {omega / a1, a2 * a3, a3};
-}
+using solver::makeSoft;
+using solver::Softness;
 
 /// The constants of one step's solve.
 struct StepContext {

@@ -1,11 +1,12 @@
-// Several floats at once for the wide contact solver: eight with AVX2 (IMPETUS_SIMD_AVX2 in a
-// translation unit compiled with -mavx2), four with SSE2 (always present on x86-64), four plain
-// floats elsewhere. Each flavour lives in its own inline namespace, so translation units built
-// for different instruction sets never share a function of the same name. Only what the solver needs; every operation
-// is lane by lane, with no fused multiply-add, so a lane computes exactly what the scalar solver would.
+// Several floats at once for the wide constraint solvers of every world (the solver layer: no
+// dimension in it): eight with AVX2 (IMPETUS_SIMD_AVX2 in a translation unit compiled with
+// -mavx2), four with SSE2 (always present on x86-64), four plain floats elsewhere. Each flavour
+// lives in its own inline namespace, so translation units built for different instruction sets
+// never share a function of the same name. Only what the solvers need; every operation is lane
+// by lane, with no fused multiply-add, so a lane computes exactly what the scalar solver would.
 //
-// Bodies are loaded and stored as rows of eight floats (BodyState: v.x, v.y, w, unused, dp.x,
-// dp.y, dq.c, dq.s) and transposed into one FloatW per field.
+// Bodies are loaded and stored as rows of eight floats (2D: v.x, v.y, w, unused, dp.x, dp.y,
+// dq.c, dq.s) and transposed into one FloatW per field.
 #pragma once
 
 #include <cstddef>
@@ -29,7 +30,7 @@
 #define IMPETUS_SIMD_NAMESPACE simd_scalar
 #endif
 
-namespace impetus::rigid2d::detail {
+namespace impetus::solver {
 inline namespace IMPETUS_SIMD_NAMESPACE {
 
 #if defined(IMPETUS_SIMD_AVX2)
@@ -275,4 +276,4 @@ inline void storeRowHeadsW(float* const (&rows)[4], FloatW c0, FloatW c1, FloatW
 #endif
 
 } // namespace IMPETUS_SIMD_NAMESPACE
-} // namespace impetus::rigid2d::detail
+} // namespace impetus::solver
