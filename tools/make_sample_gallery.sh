@@ -28,6 +28,7 @@ declare -A FRAMES=(
   ["Book/Explosion"]=150
   ["Book/Particles"]=900     # 15 s: piles on the obstacles, drift in the wind
   ["Engine/Smash"]=60        # 1 s: the projectile inside the block
+  ["Engine/Conveyor and platform"]=900  # 15 s: boxes landed on the one-way platform
   ["Engine/Tumbler"]=600
 )
 
