@@ -70,7 +70,7 @@ struct ContactConstraint {
   c.rollingResistance = contact.rollingResistance;
   const float kRolling = c.iA + c.iB;
   c.rollingMass = (c.rollingResistance > 0.0f && kRolling > 0.0f) ? 1.0f / kRolling : 0.0f;
-  c.rollingImpulse = contact.rollingImpulse;
+  c.rollingImpulse = w.def.enableWarmStarting ? contact.rollingImpulse : 0.0f;
   c.tangentSpeed = contact.tangentSpeed;
   c.softness = (c.mA == 0.0f || c.mB == 0.0f) ? staticSoft : soft;
   c.pointCount = m.pointCount;
@@ -85,8 +85,9 @@ struct ContactConstraint {
     p.rA = mp.anchorA - offsetA;
     p.rB = mp.anchorB - offsetB;
     p.adjustedSeparation = mp.separation - dot(p.rB - p.rA, m.normal);
-    p.normalImpulse = mp.normalImpulse;
-    p.tangentImpulse = mp.tangentImpulse;
+    // Warm starting: last step's impulses (WorldDef::enableWarmStarting), else from zero.
+    p.normalImpulse = w.def.enableWarmStarting ? mp.normalImpulse : 0.0f;
+    p.tangentImpulse = w.def.enableWarmStarting ? mp.tangentImpulse : 0.0f;
     const float rnA = cross(p.rA, m.normal);
     const float rnB = cross(p.rB, m.normal);
     const float kNormal = c.mA + c.mB + c.iA * rnA * rnA + c.iB * rnB * rnB;

@@ -103,7 +103,7 @@ SpringCoefficients springCoefficients(float hertz, float dampingRatio, float h) 
 /// A one-sided limit on c (+1: lower, c = length - minLength; -1: upper, c = maxLength - length).
 void solveLimit(float& accumulated, float c, float direction, BodyState& a, BodyState& b, const JointFrame& f,
                 const AxisGeometry& g, float mass, const StepContext& context, bool useBias) {
-  const float applied = limitImpulse(accumulated, c, direction * lengthRate(g, a, b), mass, context, useBias);
+  const float applied = limitImpulse(accumulated, c, direction * lengthRate(g, a, b), mass, f, context, useBias);
   applyAxial(a, b, f, g, direction * applied);
 }
 
@@ -173,9 +173,9 @@ void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyS
       const Vec2f relative = (b.v + cross(b.w, g.rB)) - (a.v + cross(a.w, g.rA));
       const float orbit = std::abs(cross(g.axis, relative)) / g.length * context.h;
       joint.positionShare = positionShare(std::max(orbit, substepTurn(a, b, context)));
-      bias = context.jointSoftness.biasRate * (1.0f - joint.positionShare) * (g.length - target);
-      massScale = context.jointSoftness.massScale;
-      impulseScale = context.jointSoftness.impulseScale;
+      bias = frame.softness.biasRate * (1.0f - joint.positionShare) * (g.length - target);
+      massScale = frame.softness.massScale;
+      impulseScale = frame.softness.impulseScale;
     }
     const float impulse = -mass * massScale * (lengthRate(g, a, b) + bias) - impulseScale * joint.impulse;
     joint.impulse += impulse;
@@ -219,7 +219,7 @@ void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyS
 }
 
 void correctJointPosition(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                          std::uint32_t staticIndex, const StepContext& context) {
+                          std::uint32_t staticIndex, const StepContext& /*context*/) {
   const DistanceJointDef& def = joint.def;
   if (!isRigid(def) || joint.positionShare == 0.0f) {
     return;
@@ -232,7 +232,7 @@ void correctJointPosition(DistanceJoint& joint, const JointFrame& frame, std::ve
     return;
   }
   const float target = def.enableLimit ? std::clamp(def.length, def.minLength, def.maxLength) : def.length;
-  const Vec2f p = g.axis * (-mass * joint.positionShare * context.positionCorrection * (g.length - target));
+  const Vec2f p = g.axis * (-mass * joint.positionShare * frame.positionCorrection * (g.length - target));
   applyPositionCorrection(frame, a, b, p, cross(g.rA, p), cross(g.rB, p));
   storePose(states, frame.indexA, staticIndex, a);
   storePose(states, frame.indexB, staticIndex, b);

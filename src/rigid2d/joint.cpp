@@ -39,6 +39,16 @@ void prepareJoints(WorldState& w, const StepContext& context) {
     f.localCenterA = a.localCenter;
     f.localCenterB = b.localCenter;
     f.centerB = b.center;
+    f.softness = context.jointSoftness;
+    f.positionCorrection = context.positionCorrection;
+    if (joint.constraintHertz > 0.0f) {
+      // The joint's own stiffness, capped as the world's (jointSoftnessFor).
+      f.softness = jointSoftnessFor(joint.constraintHertz, joint.constraintDampingRatio, context);
+      f.positionCorrection = positionCorrectionFor(f.softness, context);
+    }
+    if (!context.warmStarting) {
+      std::visit([](auto& data) { scaleImpulses(data, 0.0f, JointRows::all); }, joint.data);
+    }
     std::visit([&](auto& data) { prepareJoint(data, f, context); }, joint.data);
     joint.solved = true;
   }

@@ -34,6 +34,8 @@ struct JointFrame {
   Rot2f qA, qB;                         ///< the bodies' rotations at the step's start
   Vec2f localCenterA, localCenterB;     ///< centres of mass in the body frames, m (origin = c - rotate(q, localCenter))
   Vec2f centerB;                        ///< B's centre of mass at the step's start, world, m (the mouse joint)
+  Softness softness;                    ///< the rigid rows' stiffness (the joint's constraintHertz, or the world's)
+  float positionCorrection = 0.0f;      ///< fraction of an error corrected on positions a substep (with softness)
 };
 
 /// Whether `rows` takes in the rows of `part` (JointRows::working or JointRows::passive).
@@ -170,17 +172,17 @@ template <class JointData> void clearSwitchedOffImpulses(JointData& joint) {
 /// >= 0) for a constraint speed `cdot` (of C) and effective mass `mass`. While the limit is not
 /// reached (C > 0) it is speculative: the row may close the gap this substep, no more; once
 /// violated it is pushed back softly at the world's joint stiffness (with bias only).
-[[nodiscard]] inline float limitImpulse(float& accumulated, float c, float cdot, float mass, const StepContext& context,
-                                        bool useBias) {
+[[nodiscard]] inline float limitImpulse(float& accumulated, float c, float cdot, float mass, const JointFrame& f,
+                                        const StepContext& context, bool useBias) {
   float bias = 0.0f;
   float massScale = 1.0f;
   float impulseScale = 0.0f;
   if (c > 0.0f) {
     bias = c * context.inverseH;
   } else if (useBias) {
-    bias = context.jointSoftness.biasRate * c;
-    massScale = context.jointSoftness.massScale;
-    impulseScale = context.jointSoftness.impulseScale;
+    bias = f.softness.biasRate * c;
+    massScale = f.softness.massScale;
+    impulseScale = f.softness.impulseScale;
   }
   const float impulse = -mass * massScale * (cdot + bias) - impulseScale * accumulated;
   const float total = std::max(accumulated + impulse, 0.0f);

@@ -23,8 +23,10 @@ struct Joint {
   Vec2f localAnchorA; ///< m, body A's frame (relative to its origin)
   Vec2f localAnchorB;
   bool collideConnected = false;
-  float breakForce = 0.0f;     ///< N
-  float breakTorque = 0.0f;    ///< N m
+  float breakForce = 0.0f;      ///< N
+  float breakTorque = 0.0f;     ///< N m
+  float constraintHertz = 0.0f; ///< Hz (0: the world's jointHertz)
+  float constraintDampingRatio = 2.0f;
   bool overBreakLimit = false; ///< the break event has been raised and the reaction is still above
   std::uint64_t userData = 0;
   JointId id;

@@ -64,9 +64,9 @@ void solveJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyStat
     massScale = joint.linearSoftness.massScale;
     impulseScale = joint.linearSoftness.impulseScale;
   } else if (useBias) {
-    bias = c * context.jointSoftness.biasRate;
-    massScale = context.jointSoftness.massScale;
-    impulseScale = context.jointSoftness.impulseScale;
+    bias = c * frame.softness.biasRate;
+    massScale = frame.softness.massScale;
+    impulseScale = frame.softness.impulseScale;
   }
   const Vec2f solved = solve22(pointMass(frame, {}, rB), cdot + bias);
   const Vec2f old = joint.linearImpulse;

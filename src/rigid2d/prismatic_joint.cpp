@@ -73,7 +73,7 @@ float sliderAxialMass(const Vec2f& axis, const JointFrame& f) {
 
 void solveTranslationLimit(float& accumulated, float c, float direction, const SliderGeometry& g, const JointFrame& f,
                            BodyState& a, BodyState& b, float axialMass, const StepContext& context, bool useBias) {
-  const float applied = limitImpulse(accumulated, c, direction * axialSpeed(g, a, b), axialMass, context, useBias);
+  const float applied = limitImpulse(accumulated, c, direction * axialSpeed(g, a, b), axialMass, f, context, useBias);
   applyAxial(g, f, a, b, direction * applied);
 }
 
@@ -164,7 +164,7 @@ void solveLimitHoldingBlock(PrismaticJoint& joint, float& accumulated, float c, 
     return; // neither body can move along the axis
   }
   const auto rowMass = static_cast<float>(1.0 / schur);
-  const float applied = limitImpulse(accumulated, c, direction * axialSpeed(g, a, b), rowMass, context, useBias);
+  const float applied = limitImpulse(accumulated, c, direction * axialSpeed(g, a, b), rowMass, f, context, useBias);
   const float axial = direction * applied;
   const auto normal = static_cast<float>(-holdNormal * axial);
   const auto angular = static_cast<float>(-holdAngle * axial);
@@ -238,7 +238,7 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
   Vec2f bias;
   if (useBias) {
     joint.positionShare = positionShare(substepTurn(a, b, context));
-    bias = blockError(joint, frame, g, a, b) * (context.jointSoftness.biasRate * (1.0f - joint.positionShare));
+    bias = blockError(joint, frame, g, a, b) * (frame.softness.biasRate * (1.0f - joint.positionShare));
   }
   const Vec2f impulse = -solve22(blockMass(g, frame), cdot + bias);
   joint.impulse += impulse;
@@ -259,13 +259,13 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
 }
 
 void correctJointPosition(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                          std::uint32_t staticIndex, const StepContext& context) {
+                          std::uint32_t staticIndex, const StepContext& /*context*/) {
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
   if (joint.positionShare > 0.0f) {
     const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
     const Vec2f impulse = solve22(blockMass(g, frame), blockError(joint, frame, g, a, b)) *
-                          -(joint.positionShare * context.positionCorrection);
+                          -(joint.positionShare * frame.positionCorrection);
     applyPositionCorrection(frame, a, b, g.normal * impulse.x, impulse.x * g.s1 + impulse.y,
                             impulse.x * g.s2 + impulse.y);
     storePose(states, frame.indexA, staticIndex, a);

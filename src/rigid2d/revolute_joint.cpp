@@ -30,7 +30,7 @@ void applyAngular(BodyState& a, BodyState& b, const JointFrame& f, float impulse
 /// A one-sided angular limit on C (+1: lower, C = angle - lower; -1: upper, C = upper - angle).
 void solveLimit(float& accumulated, float c, float direction, BodyState& a, BodyState& b, const JointFrame& f,
                 float axialMass, const StepContext& context, bool useBias) {
-  const float applied = limitImpulse(accumulated, c, direction * (b.w - a.w), axialMass, context, useBias);
+  const float applied = limitImpulse(accumulated, c, direction * (b.w - a.w), axialMass, f, context, useBias);
   applyAngular(a, b, f, direction * applied);
 }
 
@@ -105,20 +105,20 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
   if (useBias) {
     joint.positionShare = positionShare(substepTurn(a, b, context));
   }
-  solvePointConstraint(joint.linearImpulse, frame, a, b, context.jointSoftness, useBias, 1.0f - joint.positionShare);
+  solvePointConstraint(joint.linearImpulse, frame, a, b, frame.softness, useBias, 1.0f - joint.positionShare);
 
   storeVelocity(states, frame.indexA, staticIndex, a);
   storeVelocity(states, frame.indexB, staticIndex, b);
 }
 
 void correctJointPosition(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                          std::uint32_t staticIndex, const StepContext& context) {
+                          std::uint32_t staticIndex, const StepContext& /*context*/) {
   if (joint.positionShare == 0.0f) {
     return;
   }
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
-  correctPointPosition(frame, a, b, joint.positionShare * context.positionCorrection);
+  correctPointPosition(frame, a, b, joint.positionShare * frame.positionCorrection);
   storePose(states, frame.indexA, staticIndex, a);
   storePose(states, frame.indexB, staticIndex, b);
 }

@@ -122,11 +122,10 @@ StepContext makeStepContext(const WorldState& w, float dt, int substeps) {
   context.inverseH = 1.0f / context.h;
   context.maxLinearSpeed = w.def.maxLinearSpeed;
   context.maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
-  // Joints are held at their own stiffness, capped like the contacts' by the substep rate.
-  context.jointSoftness =
-      makeSoft(std::min(w.def.jointHertz, 0.25f * context.inverseH), w.def.jointDampingRatio, context.h);
-  // A joint error corrected on positions goes at the rate the bias would take it back.
-  context.positionCorrection = std::min(1.0f, context.jointSoftness.biasRate * context.h);
+  // Joints are held at the world's stiffness unless they have their own (joint.cpp).
+  context.jointSoftness = jointSoftnessFor(w.def.jointHertz, w.def.jointDampingRatio, context);
+  context.positionCorrection = positionCorrectionFor(context.jointSoftness, context);
+  context.warmStarting = w.def.enableWarmStarting;
   return context;
 }
 

@@ -21,10 +21,10 @@ void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& 
   constexpr float twoPi = 2.0f * pi<float>;
   joint.startAngle = unwindAngle(std::remainder(frame.deltaAngle - joint.def.referenceAngle, twoPi));
   joint.linearSoftness = joint.def.linearHertz == 0.0f
-                             ? context.jointSoftness
+                             ? frame.softness
                              : makeSoft(joint.def.linearHertz, joint.def.linearDampingRatio, context.h);
   joint.angularSoftness = joint.def.angularHertz == 0.0f
-                              ? context.jointSoftness
+                              ? frame.softness
                               : makeSoft(joint.def.angularHertz, joint.def.angularDampingRatio, context.h);
 }
 
@@ -81,13 +81,13 @@ void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState
 }
 
 void correctJointPosition(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                          std::uint32_t staticIndex, const StepContext& context) {
+                          std::uint32_t staticIndex, const StepContext& /*context*/) {
   if (joint.positionShare == 0.0f) {
     return;
   }
   BodyState a = states[frame.indexA];
   BodyState b = states[frame.indexB];
-  const float fraction = joint.positionShare * context.positionCorrection;
+  const float fraction = joint.positionShare * frame.positionCorrection;
   if (joint.def.angularHertz == 0.0f && joint.axialMass > 0.0f) {
     const float c = unwindAngle(joint.startAngle + relativeAngle(b.dq, a.dq));
     const float impulse = -joint.axialMass * fraction * c;

@@ -84,9 +84,9 @@ void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyStat
   float impulseScale = 0.0f;
   if (useBias) {
     joint.positionShare = positionShare(substepTurn(a, b, context));
-    bias = context.jointSoftness.biasRate * (1.0f - joint.positionShare) * dot(g.normal, g.d);
-    massScale = context.jointSoftness.massScale;
-    impulseScale = context.jointSoftness.impulseScale;
+    bias = frame.softness.biasRate * (1.0f - joint.positionShare) * dot(g.normal, g.d);
+    massScale = frame.softness.massScale;
+    impulseScale = frame.softness.impulseScale;
   }
   const float cdot = dot(g.normal, b.v - a.v) + g.s2 * b.w - g.s1 * a.w;
   const float impulse = -massScale * sliderNormalMassNow(g, frame) * (cdot + bias) - impulseScale * joint.perpImpulse;
@@ -102,7 +102,7 @@ void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyStat
 }
 
 void correctJointPosition(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                          std::uint32_t staticIndex, const StepContext& context) {
+                          std::uint32_t staticIndex, const StepContext& /*context*/) {
   if (joint.positionShare == 0.0f) {
     return;
   }
@@ -110,7 +110,7 @@ void correctJointPosition(WheelJoint& joint, const JointFrame& frame, std::vecto
   BodyState b = states[frame.indexB];
   const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
   const float impulse =
-      -sliderNormalMassNow(g, frame) * joint.positionShare * context.positionCorrection * dot(g.normal, g.d);
+      -sliderNormalMassNow(g, frame) * joint.positionShare * frame.positionCorrection * dot(g.normal, g.d);
   applyPositionCorrection(frame, a, b, g.normal * impulse, g.s1 * impulse, g.s2 * impulse);
   storePose(states, frame.indexA, staticIndex, a);
   storePose(states, frame.indexB, staticIndex, b);

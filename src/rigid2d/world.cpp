@@ -324,38 +324,13 @@ void synchronizeShapes(WorldState& w, Body& b) {
 } // namespace
 
 World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
-  requireFinite(def.gravity, "gravity");
-  if (def.substeps < 1 || def.substeps > 64) {
-    throwInvalid("substeps", def.substeps, "must be between 1 and 64");
-  }
-  requireNonNegative(def.contactHertz, "contactHertz");
-  requireNonNegative(def.contactDampingRatio, "contactDampingRatio");
-  requirePositive(def.maxContactPushSpeed, "maxContactPushSpeed");
-  requireNonNegative(def.restitutionThreshold, "restitutionThreshold");
-  requirePositive(def.maxLinearSpeed, "maxLinearSpeed");
-  requireNonNegative(def.jointHertz, "jointHertz");
-  requireNonNegative(def.jointDampingRatio, "jointDampingRatio");
-  requireNonNegative(def.hitEventThreshold, "hitEventThreshold");
-  requireNonNegative(def.contactReuseDistance, "contactReuseDistance");
-  if (!(def.contactReuseAngle >= 0.0f && def.contactReuseAngle < 1.0f)) {
-    throwInvalid("contactReuseAngle", def.contactReuseAngle, "must be at least 0 rad and under 1 rad");
-  }
-  requireNonNegative(def.timeToSleep, "timeToSleep");
-  requireNonNegative(def.sleepLinearTolerance, "sleepLinearTolerance");
-  requireNonNegative(def.sleepAngularTolerance, "sleepAngularTolerance");
-  if (def.simd != SimdLevel::widest && def.simd != SimdLevel::baseline) {
-    throwInvalid("simd", static_cast<int>(def.simd), "must be SimdLevel::widest or SimdLevel::baseline");
-  }
-  if (def.solver != SolverKind::softStep && def.solver != SolverKind::bookImpulse) {
-    throwInvalid("solver", static_cast<int>(def.solver), "unknown solver kind");
-  }
+  detail::validateWorldDef(def);
   impl_->def = def;
 }
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
-const WorldDef& World::settings() const noexcept { return impl_->def; }
 int World::contactLanes() const noexcept { return detail::contactLanes(*impl_); }
 const char* World::contactSimd() const noexcept { return detail::contactSimd(*impl_); }
 

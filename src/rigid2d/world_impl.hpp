@@ -318,9 +318,22 @@ struct StepContext {
   int substeps = 1;
   Softness jointSoftness;          ///< the stiffness that holds joints together (jointHertz, jointDampingRatio)
   float positionCorrection = 0.0f; ///< fraction of a joint's error corrected on positions a substep (0: by bias)
+  bool warmStarting = true;        ///< WorldDef::enableWarmStarting
   float maxLinearSpeed = 0.0f;     ///< m/s (WorldDef::maxLinearSpeed)
   float maxAngularSpeed = 0.0f;    ///< rad/s: the largest turn per substep (a quarter turn) over h
 };
+
+/// A joint's soft rows at `hertz` and damping ratio `zeta`: stiffer than a quarter of the substep
+/// rate cannot be resolved by the substeps (as the contacts' cap).
+[[nodiscard]] inline Softness jointSoftnessFor(float hertz, float zeta, const StepContext& context) {
+  return makeSoft(std::min(hertz, 0.25f * context.inverseH), zeta, context.h);
+}
+
+/// The share of a joint's error corrected on positions in a substep, where it is (fast-turning
+/// joints): the rate the bias would take it back at.
+[[nodiscard]] inline float positionCorrectionFor(const Softness& soft, const StepContext& context) {
+  return std::min(1.0f, soft.biasRate * context.h);
+}
 
 /// Holds a dynamic body's velocity within the step's speed limits. Applied where velocities are
 /// integrated, after each joint's solve and before positions are integrated: the constraints may
@@ -399,6 +412,12 @@ void prepareContacts(WorldState& w, const StepContext& context);
 void warmStartContacts(WorldState& w);
 void solveContacts(WorldState& w, const StepContext& context, bool useBias);
 void applyRestitution(WorldState& w);
+/// Throws impetus::Error naming the first invalid field of the world's settings
+/// (world_settings.cpp).
+void validateWorldDef(const WorldDef& def);
+/// Throws impetus::Error naming constraintHertz or constraintDampingRatio when invalid
+/// (world_joints.cpp).
+void validateConstraintTuning(float hertz, float dampingRatio);
 void storeImpulses(WorldState& w);
 /// The lane width and instruction set the world's def.simd selects on this CPU.
 [[nodiscard]] int contactLanes(const WorldState& w);

@@ -20,6 +20,16 @@ namespace detail {
 Joint& WorldState::joint(JointId id) { return checkedSlot(jointIds, joints, id, "joint id", "joint"); }
 const Joint& WorldState::joint(JointId id) const { return const_cast<WorldState*>(this)->joint(id); }
 
+/// A joint's own stiffness (0 hertz: the world's) and damping ratio.
+void validateConstraintTuning(float hertz, float dampingRatio) {
+  if (!(std::isfinite(hertz) && hertz >= 0.0f)) {
+    throwInvalid("constraintHertz", hertz, "must be a finite frequency >= 0 Hz (0: the world's jointHertz)");
+  }
+  if (!(std::isfinite(dampingRatio) && dampingRatio >= 0.0f)) {
+    throwInvalid("constraintDampingRatio", dampingRatio, "must be a finite damping ratio >= 0");
+  }
+}
+
 bool WorldState::jointBlocksCollision(std::uint32_t bodyA, std::uint32_t bodyB) const {
   const Body& a = bodies[bodyA];
   const Body& b = bodies[bodyB];
@@ -52,6 +62,7 @@ void validateBase(const JointDefBase& def) {
   if (std::isnan(def.breakTorque) || def.breakTorque < 0.0f) {
     throwInvalid("breakTorque", def.breakTorque, "must be >= 0 (infinity: unbreakable)");
   }
+  detail::validateConstraintTuning(def.constraintHertz, def.constraintDampingRatio);
 }
 
 void validateSpring(float hertz, float dampingRatio) {
@@ -113,6 +124,8 @@ JointId addJoint(WorldState& w, const JointDefBase& base, detail::JointData data
   j.collideConnected = base.collideConnected;
   j.breakForce = base.breakForce;
   j.breakTorque = base.breakTorque;
+  j.constraintHertz = base.constraintHertz;
+  j.constraintDampingRatio = base.constraintDampingRatio;
   j.userData = base.userData;
   j.id = id;
   j.alive = true;

@@ -38,6 +38,12 @@ struct JointDefBase {
   bool collideConnected = false;
   float breakForce = std::numeric_limits<float>::infinity();  ///< N
   float breakTorque = std::numeric_limits<float>::infinity(); ///< N m
+  /// How firmly the joint's rigid rows are held, Hz (Box2D v3's constraintHertz): a joint pulled
+  /// apart by a load W settles W / k apart, k = m_eff (2 pi f)^2, and is brought back at that
+  /// rate. 0: the world's jointHertz. Capped, like the world's, at a quarter of the substep rate.
+  float constraintHertz = 0.0f;
+  /// The rigid rows' damping ratio with constraintHertz (dimensionless; ignored without it).
+  float constraintDampingRatio = 2.0f;
   std::uint64_t userData = 0;
 };
 

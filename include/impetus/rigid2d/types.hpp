@@ -98,8 +98,11 @@ struct WorldDef {
   float jointHertz = 60.0f;
   float jointDampingRatio = 2.0f;
   float restitutionThreshold = 1.0f; ///< m/s: slower impacts do not bounce
-  float maxLinearSpeed = 400.0f;     ///< m/s
-  float hitEventThreshold = 1.0f;    ///< m/s: impacts at least this fast (and over 1 mm/s) raise a hit event
+  /// Start each step's contacts and joints from the impulses they ended the last with (what
+  /// lets stacks and chains converge in a few iterations). Off: from zero (for study and tests).
+  bool enableWarmStarting = true;
+  float maxLinearSpeed = 400.0f;  ///< m/s
+  float hitEventThreshold = 1.0f; ///< m/s: impacts at least this fast (and over 1 mm/s) raise a hit event
   /// Manifold reuse (as Jolt's body-pair cache): a touching pair of sharp-cornered shapes
   /// (polygons and segments without rounding) whose surfaces have moved less than this relative
   /// to each other since its manifold was computed, and turned less than contactReuseAngle,

@@ -280,6 +280,17 @@ public:
   void setPreSolve(PreSolveFcn preSolve);
 
   [[nodiscard]] const WorldDef& settings() const noexcept;
+  /// Run-time changes of the settings, each validated as at creation (impetus::Error naming the
+  /// field; the world is unchanged then). Gravity changes wake nothing: sleeping bodies stay
+  /// asleep until touched or woken, as in Box2D v3.
+  void setGravity(const Vec2f& gravity);
+  void setContactTuning(float hertz, float dampingRatio, float pushSpeed);
+  void setJointTuning(float hertz, float dampingRatio);
+  void setRestitutionThreshold(float speed);
+  void setHitEventThreshold(float speed);
+  void enableWarmStarting(bool enable);
+  /// A joint's own stiffness (JointDefBase::constraintHertz; 0: the world's) and damping ratio.
+  void setJointConstraintTuning(JointId id, float hertz, float dampingRatio);
   /// How many contacts the soft step solves at once (8 with AVX2, 4 with SSE2) and the name of
   /// the instruction set ("avx2", "sse2" or "scalar"): what WorldDef::simd chose on this CPU.
   [[nodiscard]] int contactLanes() const noexcept;
