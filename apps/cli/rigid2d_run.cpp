@@ -87,9 +87,11 @@ const char* jointTypeName(JointType t) {
   case JointType::motor:
     return "motor";
   case JointType::mouse:
+    return "mouse";
+  case JointType::filter:
     break;
   }
-  return "mouse";
+  return "filter";
 }
 
 /// Every body's state, the energies summed over the dynamic bodies; false if anything is not

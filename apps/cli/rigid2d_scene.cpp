@@ -86,6 +86,7 @@ WorldDef Loader::worldDef(const json& j) {
   d.contactDampingRatio = f.nonNegative("contact_damping_ratio", d.contactDampingRatio);
   d.maxContactPushSpeed = f.positive("max_contact_push_speed", d.maxContactPushSpeed);
   d.jointHertz = f.nonNegative("joint_hertz", d.jointHertz);
+  d.enableWarmStarting = f.boolean("enable_warm_starting", d.enableWarmStarting);
   d.jointDampingRatio = f.nonNegative("joint_damping_ratio", d.jointDampingRatio);
   d.restitutionThreshold = f.nonNegative("restitution_threshold", d.restitutionThreshold);
   d.maxLinearSpeed = f.positive("max_linear_speed", d.maxLinearSpeed);
@@ -115,6 +116,7 @@ Material Loader::material(Fields& f, Material m) {
   m.friction = f.nonNegative("friction", m.friction);
   m.restitution = f.fraction("restitution", m.restitution);
   m.rollingResistance = f.nonNegative("rolling_resistance", m.rollingResistance);
+  m.tangentSpeed = f.real("tangent_speed", m.tangentSpeed);
   return m;
 }
 
@@ -212,6 +214,7 @@ ShapeDef Loader::shapeDef(Fields& f) {
   def.friction = m.friction;
   def.restitution = m.restitution;
   def.rollingResistance = m.rollingResistance;
+  def.tangentSpeed = m.tangentSpeed;
   def.isSensor = f.boolean("sensor", def.isSensor);
   if (const json* filter = f.find("filter")) {
     Fields ff(*filter, f.path("filter"));

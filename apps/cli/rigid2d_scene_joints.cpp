@@ -85,6 +85,8 @@ void Loader::base(Fields& f, JointDefBase& d, bool anchors) {
   if (f.has("break_torque")) {
     d.breakTorque = f.nonNegative("break_torque", 0.0);
   }
+  d.constraintHertz = f.nonNegative("constraint_hertz", d.constraintHertz);
+  d.constraintDampingRatio = f.nonNegative("constraint_damping_ratio", d.constraintDampingRatio);
 }
 
 void Loader::bodies(Fields& f, JointDefBase& d) {
@@ -109,7 +111,7 @@ void Loader::limits(Fields& f, const std::string& lowerKey, const std::string& u
 void Loader::joint(const json& j, const std::string& where) {
   Fields f(j, where);
   const std::string type =
-      typeOf(f, {"revolute", "prismatic", "distance", "weld", "wheel", "motor", "mouse"}, "joint type");
+      typeOf(f, {"revolute", "prismatic", "distance", "weld", "wheel", "motor", "mouse", "filter"}, "joint type");
   const std::string name = nameOf(f);
   if (!name.empty() && !jointNames_.insert(name).second) {
     fail(f.path("name"), "duplicate joint name '" + name + "'");
@@ -222,6 +224,12 @@ void Loader::joint(const json& j, const std::string& where) {
     d.maxForce = f.nonNegative("max_force", d.maxForce);
     d.maxTorque = f.nonNegative("max_torque", d.maxTorque);
     d.correctionFactor = f.fraction("correction_factor", d.correctionFactor);
+    f.done();
+    id = at(where, [&] { return world.createJoint(d); });
+  } else if (type == "filter") {
+    FilterJointDef d;
+    bodies(f, d);
+    base(f, d, false);
     f.done();
     id = at(where, [&] { return world.createJoint(d); });
   } else {

@@ -29,6 +29,7 @@ struct Material {
   float friction = 0.6f;
   float restitution = 0.0f;
   float rollingResistance = 0.0f;
+  float tangentSpeed = 0.0f; ///< m/s (a conveyor belt's surface)
 };
 
 /// Fills a scene from a document: world settings, materials, then bodies, joints and effectors

@@ -40,6 +40,10 @@ void drawJoint(const World& world, DebugDraw& draw, JointId joint) {
     }
     draw.point(xfB.p, 5.0f, c);
     break;
+  case JointType::filter:
+    // No constraint: a faint line between the two origins says which bodies ignore each other.
+    draw.segment(xfA.p, xfB.p, c.withAlpha(0.25f));
+    break;
   default:
     // As Box2D draws them: body A's origin to its anchor, the anchors, B's anchor to its origin
     // (not from a static body's origin: the ground's is usually far away).

@@ -100,6 +100,7 @@ JointRows workingRowsOf(const WeldJoint& joint) {
 }
 JointRows workingRowsOf(const MotorJoint&) { return JointRows::all; }
 JointRows workingRowsOf(const MouseJoint&) { return JointRows::all; }
+JointRows workingRowsOf(const FilterJoint&) { return JointRows::none; }
 
 } // namespace
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "rigid2d/distance_joint.hpp"
+#include "rigid2d/filter_joint.hpp"
 #include "rigid2d/motor_joint.hpp"
 #include "rigid2d/mouse_joint.hpp"
 #include "rigid2d/prismatic_joint.hpp"
@@ -13,8 +14,8 @@
 
 namespace impetus::rigid2d::detail {
 
-using JointData =
-    std::variant<RevoluteJoint, PrismaticJoint, DistanceJoint, WeldJoint, WheelJoint, MotorJoint, MouseJoint>;
+using JointData = std::variant<RevoluteJoint, PrismaticJoint, DistanceJoint, WeldJoint, WheelJoint, MotorJoint,
+                               MouseJoint, FilterJoint>;
 
 struct Joint {
   JointData data;

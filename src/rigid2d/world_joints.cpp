@@ -270,6 +270,15 @@ JointId World::createJoint(const MouseJointDef& def) {
   return addJoint(*impl_, def, j, false);
 }
 
+JointId World::createJoint(const FilterJointDef& def) {
+  if (def.collideConnected) {
+    throwInvalid("collideConnected", 1.0, "a filter joint only stops its bodies colliding: it must be false");
+  }
+  detail::FilterJoint j;
+  j.def = def;
+  return addJoint(*impl_, def, j);
+}
+
 void World::destroyJoint(JointId id) {
   WorldState& w = *impl_;
   Joint& j = w.joint(id);

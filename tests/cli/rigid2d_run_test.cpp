@@ -286,6 +286,23 @@ TEST(Rigid2dRun, effectors_act_only_in_their_time_window) {
   EXPECT_NEAR(steps.at(120).at("puck")[vx], 5.0, 1e-4);
 }
 
+TEST(Rigid2dRun, a_conveyor_carries_its_crates_at_its_speed_and_filtered_boxes_pass_through) {
+  const std::string out = tempPath("conveyor.csv");
+  const CliRun run = impetus({"run", scene("conveyor.json"), "--steps", "180", "--every", "180", "--out", out});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto& end = byStep(readCsv(out)).at(180);
+  // After 3 s the crates ride at the belt's 2 m/s (friction 0.8 brings them there within 0.3 s).
+  for (const char* crate : {"crate1", "crate2"}) {
+    EXPECT_NEAR(end.at(crate)[vx], 2.0, 0.02) << crate;
+    EXPECT_NEAR(end.at(crate)[vy], 0.0, 0.01) << crate;
+  }
+  // The filter joint's boxes ignore each other: both rest on the belt (centres 0.5 m up), riding.
+  for (const char* ghost : {"ghost_low", "ghost_high"}) {
+    EXPECT_NEAR(end.at(ghost)[y], 0.5, 0.02) << ghost;
+    EXPECT_NEAR(end.at(ghost)[vx], 2.0, 0.02) << ghost;
+  }
+}
+
 TEST(Rigid2dRun, the_chain_hangs_together_at_its_joints) {
   const std::string out = tempPath("chain.csv");
   const CliRun run = impetus({"run", scene("chain.json"), "--steps", "600", "--every", "100", "--out", out});

@@ -25,7 +25,7 @@ namespace impetus::rigid2d {
 
 using JointId = Id<struct JointTag>;
 
-enum class JointType { revolute, prismatic, distance, weld, wheel, motor, mouse };
+enum class JointType { revolute, prismatic, distance, weld, wheel, motor, mouse, filter };
 
 /// What every joint has.
 struct JointDefBase {
@@ -138,6 +138,11 @@ struct MouseJointDef : JointDefBase {
   float dampingRatio = 0.7f;
   float maxForce = 1000.0f; ///< N, >= 0
 };
+
+/// Only turns collision off between two bodies (Box2D v3's filter joint): no constraint, no
+/// force; the bodies sleep and wake together, like any joined pair. The anchors are not used;
+/// collideConnected must stay false (a filter joint that lets the bodies collide does nothing).
+struct FilterJointDef : JointDefBase {};
 
 /// A joint's reaction exceeded its breakForce or breakTorque this step.
 struct JointBreakEvent {

@@ -157,6 +157,7 @@ public:
   JointId createJoint(const WheelJointDef& def);
   JointId createJoint(const MotorJointDef& def);
   JointId createJoint(const MouseJointDef& def);
+  JointId createJoint(const FilterJointDef& def);
   void destroyJoint(JointId id);
   [[nodiscard]] bool isValid(JointId id) const noexcept;
   [[nodiscard]] std::size_t jointCount() const noexcept;

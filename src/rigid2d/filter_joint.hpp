@@ -1,0 +1,24 @@
+// A joint that only turns collision off between its two bodies (FilterJointDef): no rows, so
+// every solver stage passes it by. It keeps the bodies in one island, as every joint does.
+#pragma once
+
+#include "rigid2d/joint_solver.hpp"
+
+namespace impetus::rigid2d::detail {
+
+struct FilterJoint {
+  FilterJointDef def;
+};
+
+inline void prepareJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, const StepContext& /*context*/) {}
+inline void scaleImpulses(FilterJoint& /*joint*/, float /*scale*/, JointRows /*rows*/) {}
+inline void warmStartJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, std::vector<BodyState>& /*states*/,
+                           std::uint32_t /*staticIndex*/, JointRows /*rows*/) {}
+inline void solveJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, std::vector<BodyState>& /*states*/,
+                       std::uint32_t /*staticIndex*/, const StepContext& /*context*/, bool /*useBias*/) {}
+[[nodiscard]] inline JointReaction jointReaction(const FilterJoint& /*joint*/, const JointFrame& /*frame*/,
+                                                 float /*inverseH*/) {
+  return {};
+}
+
+} // namespace impetus::rigid2d::detail
