@@ -28,7 +28,7 @@ using detail::Shape;
 using detail::WorldState;
 
 constexpr std::uint32_t snapshotMagic = 0x53443249; // "I2DS"
-constexpr std::uint32_t snapshotVersion = 1;
+constexpr std::uint32_t snapshotVersion = 2;
 
 static_assert(std::is_trivially_copyable_v<Contact>);
 static_assert(std::is_trivially_copyable_v<Joint>);
@@ -139,6 +139,7 @@ void World::saveState(WorldSnapshot& out) const {
       put.put(b.torque);
       put.put(b.awake);
       put.put(b.sleepTime);
+      put.put(b.contactHead);
     }
   }
   for (std::size_t slot = 0; slot < w.shapes.size(); ++slot) {
@@ -188,6 +189,7 @@ void World::restoreState(const WorldSnapshot& snapshot) {
       b.torque = in.get<float>();
       b.awake = in.get<bool>();
       b.sleepTime = in.get<float>();
+      b.contactHead = in.get<std::uint32_t>();
     }
   }
   for (std::size_t slot = 0; slot < w.shapes.size(); ++slot) {
@@ -211,6 +213,23 @@ void World::restoreState(const WorldSnapshot& snapshot) {
     }
   }
   getList(in, w.freeContacts, contactSlots);
+  // The bodies' contact lists must stay inside the contacts restored (a snapshot of this world
+  // always does; anything else is refused before a traversal could leave the array).
+  const auto validEdge = [&](std::uint32_t key) {
+    return key == detail::noContactEdge || ((key >> 1) < contactSlots && w.contacts[key >> 1].alive);
+  };
+  bool listsValid = true;
+  for (const Body& b : w.bodies) {
+    listsValid = listsValid && (!b.alive || validEdge(b.contactHead));
+  }
+  for (const Contact& c : w.contacts) {
+    listsValid =
+        listsValid &&
+        (!c.alive || (validEdge(c.next[0]) && validEdge(c.next[1]) && validEdge(c.prev[0]) && validEdge(c.prev[1])));
+  }
+  if (!listsValid) {
+    throw Error("snapshot", "snapshot: a body's contact list points outside the contacts");
+  }
   for (Joint& j : w.joints) {
     if (j.alive) {
       j = in.get<Joint>();

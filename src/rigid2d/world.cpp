@@ -148,6 +148,16 @@ void createContact(WorldState& w, std::uint64_t key) {
   c.reusable = hasSharpCorners(a) && hasSharpCorners(b) && !c.preSolve;
   c.alive = true;
   w.contactByPair.insert(key, slot);
+  // At the head of both bodies' lists.
+  for (std::uint32_t edge = 0; edge < 2; ++edge) {
+    Body& body = w.bodies[edge == 0 ? c.bodyA : c.bodyB];
+    c.prev[edge] = detail::noContactEdge;
+    c.next[edge] = body.contactHead;
+    if (body.contactHead != detail::noContactEdge) {
+      w.contacts[body.contactHead >> 1].prev[body.contactHead & 1U] = detail::contactEdgeKey(slot, edge);
+    }
+    body.contactHead = detail::contactEdgeKey(slot, edge);
+  }
 }
 
 /// Whether the game's custom filter lets a new pair (key: lower shape slot, higher) collide:
@@ -348,12 +358,14 @@ void World::setTransform(BodyId id, const Vec2f& position, float angle) {
   Impl& w = *impl_;
   Body& b = w.body(id);
   b.wake();
-  // What touches it (rests on it, or is pushed by it) reacts too.
-  for (const Contact& c : w.contacts) {
-    if (c.alive && c.manifold.pointCount > 0 && (c.bodyA == id.index || c.bodyB == id.index)) {
+  // What touches it (rests on it, or is pushed by it) reacts too: its own contacts only.
+  for (std::uint32_t key = b.contactHead; key != detail::noContactEdge;) {
+    const Contact& c = w.contacts[key >> 1];
+    if (c.manifold.pointCount > 0) {
       w.bodies[c.bodyA].wake();
       w.bodies[c.bodyB].wake();
     }
+    key = c.next[key & 1U];
   }
   b.transform = {position, Rot2f::fromAngle(angle)};
   b.center = transformPoint(b.transform, b.localCenter);
@@ -450,8 +462,30 @@ void destroyContact(WorldState& w, std::uint32_t slot, ContactEvents& events, Se
   Contact& c = w.contacts[slot];
   reportEnd(w, c, events, sensors);
   w.contactByPair.erase(pairKey(c.shapeA, c.shapeB));
+  // Out of both bodies' lists.
+  for (std::uint32_t edge = 0; edge < 2; ++edge) {
+    const std::uint32_t before = c.prev[edge];
+    const std::uint32_t after = c.next[edge];
+    if (before != noContactEdge) {
+      w.contacts[before >> 1].next[before & 1U] = after;
+    } else {
+      w.bodies[edge == 0 ? c.bodyA : c.bodyB].contactHead = after;
+    }
+    if (after != noContactEdge) {
+      w.contacts[after >> 1].prev[after & 1U] = before;
+    }
+  }
   c.alive = false;
   w.freeContacts.push_back(slot);
+}
+
+void bodyContacts(const WorldState& w, std::uint32_t body, std::vector<std::uint32_t>& out) {
+  out.clear();
+  for (std::uint32_t key = w.bodies[body].contactHead; key != noContactEdge;) {
+    out.push_back(key >> 1);
+    key = w.contacts[key >> 1].next[key & 1U];
+  }
+  std::sort(out.begin(), out.end());
 }
 
 } // namespace detail

@@ -116,11 +116,10 @@ void World::destroyBody(BodyId id) {
     destroyJoint(w.joints[b.joints.back()].id);
   }
   const std::uint32_t bodySlot = id.index;
-  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+  // Its own contacts only, in slot order (the order of their end events and of the free list).
+  detail::bodyContacts(w, bodySlot, w.bodyContactScratch);
+  for (const std::uint32_t slot : w.bodyContactScratch) {
     const Contact& c = w.contacts[slot];
-    if (!c.alive || (c.bodyA != bodySlot && c.bodyB != bodySlot)) {
-      continue;
-    }
     w.bodies[c.bodyA == bodySlot ? c.bodyB : c.bodyA].wake(); // what rested on it must fall
     detail::destroyContact(w, slot, w.pendingEvents, w.pendingSensorEvents);
   }

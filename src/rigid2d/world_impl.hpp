@@ -80,6 +80,9 @@ struct Body {
   std::uint32_t solverIndex = 0;     ///< this step's index into the solver arrays (moving bodies)
   std::vector<std::uint32_t> shapes; ///< shape slots
   std::vector<std::uint32_t> joints; ///< joint slots of the joints attached to this body
+  /// The first of the body's contacts, as a contact edge key (contactEdgeKey); noContactEdge:
+  /// none. The contacts link through their edges (Contact::next, prev): no allocation.
+  std::uint32_t contactHead = 0xffffffffU;
   std::uint64_t userData = 0;
   BodyId id;
   bool alive = false;
@@ -131,7 +134,18 @@ struct Contact {
   bool reusable = false; ///< both shapes have sharp corners: the manifold may be carried (manifold_reuse.cpp)
   bool alive = false;
   ManifoldFrame frame; ///< cold: read by the collide pass only (after the solver's fields)
+  /// The contact's place in each body's list of contacts (edge 0: bodyA's, 1: bodyB's), as edge
+  /// keys of the neighbours (contactEdgeKey), noContactEdge at the ends.
+  std::array<std::uint32_t, 2> next{0xffffffffU, 0xffffffffU};
+  std::array<std::uint32_t, 2> prev{0xffffffffU, 0xffffffffU};
 };
+
+/// The end of a body's contact list.
+inline constexpr std::uint32_t noContactEdge = 0xffffffffU;
+/// A contact's edge in one body's list: (slot << 1) | edge, edge 0 for bodyA and 1 for bodyB.
+[[nodiscard]] constexpr std::uint32_t contactEdgeKey(std::uint32_t slot, std::uint32_t edge) noexcept {
+  return (slot << 1) | edge;
+}
 
 /// A hit event needs an approach faster than this (and the world's hitEventThreshold): a resting
 /// contact approaches at a few um/s of round-off. m/s.
@@ -258,7 +272,8 @@ struct WorldState {
   /// by their shape pair.
   std::vector<Contact> contacts;
   std::vector<std::uint32_t> freeContacts;
-  PairMap contactByPair; ///< (shapeA << 32 | shapeB) -> slot
+  std::vector<std::uint32_t> bodyContactScratch; ///< bodyContacts' list for the API's body changes
+  PairMap contactByPair;                         ///< (shapeA << 32 | shapeB) -> slot
 
   IdPool jointIds;
   std::vector<Joint> joints; ///< by id slot
@@ -363,6 +378,9 @@ struct StepContext {
 
 /// Frees a contact; one that touched reports its end to `events` (or `sensors`).
 void destroyContact(WorldState& w, std::uint32_t slot, ContactEvents& events, SensorEvents& sensors);
+/// The slots of a body's contacts, in slot order, into `out` (cleared first): what is touched
+/// when the body alone changes, without a pass over every contact (world.cpp).
+void bodyContacts(const WorldState& w, std::uint32_t body, std::vector<std::uint32_t>& out);
 
 /// Notes a freshly computed manifold's points in its bodies' frames (Contact::frame).
 void recordManifoldFrame(Contact& contact, const Transform2f& xfA, const Transform2f& xfB);

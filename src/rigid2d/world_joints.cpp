@@ -140,9 +140,11 @@ JointId addJoint(WorldState& w, const JointDefBase& base, detail::JointData data
   if (!j.collideConnected && a != b) {
     // The two bodies stop colliding: their contacts go, and those that touched report their
     // end with the next step's events.
-    for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+    // Body a's contacts, in slot order: those with b go.
+    detail::bodyContacts(w, a, w.bodyContactScratch);
+    for (const std::uint32_t slot : w.bodyContactScratch) {
       const detail::Contact& c = w.contacts[slot];
-      if (c.alive && ((c.bodyA == a && c.bodyB == b) || (c.bodyA == b && c.bodyB == a))) {
+      if ((c.bodyA == a && c.bodyB == b) || (c.bodyA == b && c.bodyB == a)) {
         detail::destroyContact(w, slot, w.pendingEvents, w.pendingSensorEvents);
       }
     }

@@ -94,5 +94,22 @@ TEST(Allocation2D, nor_with_sleeping_and_a_thread_pool) {
   EXPECT_EQ(allocationsOverSteps(world, 120), 0);
 }
 
+TEST(Allocation2D, saving_a_snapshot_again_reuses_its_storage) {
+  World world;
+  buildScene(world);
+  (void)allocationsOverSteps(world, 60);
+  WorldSnapshot snapshot;
+  world.saveState(snapshot);
+  const long before = allocations.load();
+  for (int i = 0; i < 10; ++i) {
+    world.step(1.0f / 60.0f);
+    world.saveState(snapshot); // the same bodies, shapes and joints: fits the bytes it holds
+  }
+  // The steps allocate nothing once warmed up (above), and neither do the saves.
+  EXPECT_EQ(allocations.load() - before, 0);
+  world.restoreState(snapshot);
+  EXPECT_EQ(allocations.load() - before, 0);
+}
+
 } // namespace
 } // namespace impetus::rigid2d

@@ -54,6 +54,10 @@ TEST(Determinism2D, identical_at_any_simd_width) {
   const World widest;
   EXPECT_EQ(baseline.contactLanes(), 4);
   EXPECT_GE(widest.contactLanes(), baseline.contactLanes());
+  if (widest.contactLanes() == baseline.contactLanes()) {
+    // Without AVX2 both worlds run the same kernels: comparing them would prove nothing.
+    GTEST_SKIP() << "this CPU has no wider lanes than the baseline (" << baseline.contactSimd() << ")";
+  }
   EXPECT_EQ(runMixedScene(nullptr, SimdLevel::baseline), runMixedScene(nullptr, SimdLevel::widest))
       << "baseline (" << baseline.contactSimd() << ") and widest (" << widest.contactSimd() << ") differ";
 }
