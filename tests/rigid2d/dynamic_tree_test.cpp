@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <thread>
 #include <vector>
 
 namespace impetus::rigid2d {
@@ -116,6 +117,44 @@ TEST(DynamicTree, same_operations_give_the_same_tree) {
   EXPECT_EQ(orderA, orderB);
   EXPECT_EQ(orderA.size(), 300U);
   EXPECT_EQ(a.tree.areaRatio(), b.tree.areaRatio());
+}
+
+TEST(DynamicTree, queries_are_reentrant_and_may_run_on_several_threads_at_once) {
+  Fixture f;
+  for (int i = 0; i < 2000; ++i) {
+    f.boxes.push_back(f.randomBox());
+    f.proxies.push_back(f.tree.createProxy(f.boxes.back(), static_cast<std::uint64_t>(i)));
+  }
+  const AABB outer{{-10.0f, -10.0f}, {10.0f, 10.0f}};
+  const AABB inner{{-30.0f, 20.0f}, {-20.0f, 30.0f}};
+  const std::vector<std::uint64_t> innerAlone = f.query(inner);
+  ASSERT_FALSE(innerAlone.empty());
+  // A visitor that queries the tree again, for every proxy the outer query visits: the outer
+  // query must go on where it was (it kept its traversal to itself).
+  std::vector<std::uint64_t> outerHits;
+  bool nestedMatched = true;
+  f.tree.query(outer, [&](std::int32_t, std::uint64_t user) {
+    outerHits.push_back(user);
+    nestedMatched = nestedMatched && f.query(inner) == innerAlone;
+    return true;
+  });
+  EXPECT_TRUE(nestedMatched);
+  std::sort(outerHits.begin(), outerHits.end());
+  EXPECT_EQ(outerHits, f.query(outer));
+  // Two threads querying at once see what one thread sees.
+  std::vector<std::uint64_t> a;
+  std::vector<std::uint64_t> b;
+  std::thread other([&] {
+    for (int i = 0; i < 200; ++i) {
+      a = f.query(outer);
+    }
+  });
+  for (int i = 0; i < 200; ++i) {
+    b = f.query(inner);
+  }
+  other.join();
+  EXPECT_EQ(a, f.query(outer));
+  EXPECT_EQ(b, innerAlone);
 }
 
 TEST(DynamicTree, rejects_invalid_boxes) {

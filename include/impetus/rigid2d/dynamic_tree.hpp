@@ -7,6 +7,7 @@
 
 #include <impetus/rigid2d/aabb.hpp>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -36,7 +37,8 @@ public:
   [[nodiscard]] float areaRatio() const noexcept;
 
   /// Calls `visit(proxy, userData)` for every proxy whose fat box overlaps `box`, in a fixed
-  /// order; the visitor returns false to stop.
+  /// order; the visitor returns false to stop. Queries and ray casts keep no state in the tree:
+  /// a visitor may query the tree again, and several threads may query it at once.
   template <class Visitor> void query(const AABB& box, Visitor&& visit) const;
 
   /// Calls `visit(proxy, userData, p1, p2)` for proxies whose box the segment p1 -> p2 crosses;
@@ -72,18 +74,48 @@ private:
   std::int32_t root_ = nullNode;
   std::int32_t freeList_ = nullNode;
   int proxyCount_ = 0;
-  mutable std::vector<std::int32_t> stack_;
+};
+
+/// The nodes a traversal has still to visit: on the caller's stack, so traversals share nothing.
+/// A balanced tree of a million proxies is about 30 deep and its traversal holds about that many
+/// nodes; past traversalStackSize (a degenerate tree) the rest spills to the heap.
+class TraversalStack {
+public:
+  static constexpr std::size_t traversalStackSize = 256;
+
+  void push(std::int32_t node) {
+    if (size_ < fixed_.size()) {
+      fixed_[size_] = node;
+    } else {
+      spill_.push_back(node);
+    }
+    ++size_;
+  }
+  std::int32_t pop() {
+    --size_;
+    if (size_ < fixed_.size()) {
+      return fixed_[size_];
+    }
+    const std::int32_t node = spill_.back();
+    spill_.pop_back();
+    return node;
+  }
+  [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
+
+private:
+  std::array<std::int32_t, traversalStackSize> fixed_; // NOLINT: filled before it is read (no 1 KB clear per query)
+  std::vector<std::int32_t> spill_;
+  std::size_t size_ = 0;
 };
 
 template <class Visitor> void DynamicTree::query(const AABB& box, Visitor&& visit) const {
   if (root_ == nullNode) {
     return;
   }
-  stack_.clear();
-  stack_.push_back(root_);
-  while (!stack_.empty()) {
-    const std::int32_t i = stack_.back();
-    stack_.pop_back();
+  TraversalStack stack;
+  stack.push(root_);
+  while (!stack.empty()) {
+    const std::int32_t i = stack.pop();
     const Node& n = node(i);
     if (!overlaps(n.box, box)) {
       continue;
@@ -93,8 +125,8 @@ template <class Visitor> void DynamicTree::query(const AABB& box, Visitor&& visi
         return;
       }
     } else {
-      stack_.push_back(n.child2);
-      stack_.push_back(n.child1);
+      stack.push(n.child2);
+      stack.push(n.child1);
     }
   }
 }
@@ -104,11 +136,10 @@ template <class Visitor> void DynamicTree::rayCast(const Vec2f& p1, const Vec2f&
     return;
   }
   float maxFraction = 1.0f;
-  stack_.clear();
-  stack_.push_back(root_);
-  while (!stack_.empty()) {
-    const std::int32_t i = stack_.back();
-    stack_.pop_back();
+  TraversalStack stack;
+  stack.push(root_);
+  while (!stack.empty()) {
+    const std::int32_t i = stack.pop();
     const Node& n = node(i);
     const Vec2f end = p1 + (p2 - p1) * maxFraction;
     if (!segmentOverlaps(n.box, p1, end)) {
@@ -123,8 +154,8 @@ template <class Visitor> void DynamicTree::rayCast(const Vec2f& p1, const Vec2f&
         maxFraction = value;
       }
     } else {
-      stack_.push_back(n.child2);
-      stack_.push_back(n.child1);
+      stack.push(n.child2);
+      stack.push(n.child1);
     }
   }
 }
