@@ -120,8 +120,8 @@ float computeCoreRadius(const WorldState& w, const Body& b) {
 
 /// Continuous collision against static shapes: a body that moved more than half its core radius
 /// this step could have passed through a thin static shape, or been driven deep into a thick
-/// one (a light 8 m plank struck by an 80 kg body at 162 m/s moved 1.5 m a step, less than its
-/// 1.9 m core, and went 0.8 m into the floor and on out of its underside: soak fix 19). A
+/// one (a light 8 m plank struck by an 80 kg body at 162 m/s moves 1.5 m a step, less than its
+/// 1.9 m core, and without the sweep goes 0.8 m into the floor and on out of its underside). A
 /// circle of a quarter of its core radius about its centre is swept from `start` to `end` (a
 /// ray against each static shape inflated by that much) and stopped just before the first hit;
 /// the speculative contact takes over next step. Returns the allowed end.
@@ -129,7 +129,7 @@ float computeCoreRadius(const WorldState& w, const Body& b) {
 /// A quarter, not the whole core (as Box2D v3's fallback sweep): a body touching a wall has its
 /// centre a core radius from it, so a whole-core sweep hits at once whenever the body drifts
 /// toward the wall, and a ball sliding down a wall at speed stays pinned where it is while
-/// gravity winds its velocity up without end (found by the soak test). A quarter of the core
+/// gravity winds its velocity up without end. A quarter of the core
 /// still keeps the centre on its side of the thinnest wall; the contacts do the rest.
 Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start, const Vec2f& end) {
   const float core = b.coreRadius;
@@ -140,8 +140,8 @@ Vec2f sweepAgainstStatic(const WorldState& w, const Body& b, const Vec2f& start,
   const AABB swept = enlarge({min(start, end), max(start, end)}, skin);
   // A centre already inside a static shape's skin (a body pushed into a wall by a joint or by
   // a blow, or a long body turning into the floor) is out of the rays' reach: a ray from inside
-  // sees no surface, and the centre went on through the wall (the jointed soak's escapes at
-  // 250-400 m/s). It may move along the surface it is nearest to or out, not deeper: the
+  // sees no surface, and the centre would go on through the wall. It may move along the
+  // surface it is nearest to or out, not deeper: the
   // motion loses its component into that surface, and the contacts push it out.
   Vec2f motion = end - start;
   w.staticTree.query(swept, [&](std::int32_t, std::uint64_t slot64) {
@@ -230,7 +230,7 @@ bool sweepBullet(WorldState& w, Body& b, const Vec2f& startCenter, const Rot2f& 
         // Touching already at the start (resting on, sliding along, or just bounced off it):
         // the contacts hold that. Only the centre's small circle could still tunnel through
         // (as Box2D v3's fallback). Stopping at time 0 instead would pin the bullet where it is
-        // while its velocity grows without end (found by the soak test).
+        // while its velocity grows without end.
         const ShapeProxy centre{{b.localCenter}, 1, 0.25f * core};
         toi = timeOfImpact(otherProxy, still, centre, bulletSweep, first);
       }

@@ -188,14 +188,14 @@ namespace {
 /// of the group's kinetic energy before it: a joint turning omega h rad a substep has a
 /// centripetal pull whose warm start adds (omega h)^2 of it (the relax pass has already turned
 /// the velocities along the joint at the substep's end, so J v = 0 when the warm start comes):
-/// 0.25 at half a radian a substep, the fastest whirls the soak makes (fix 10; the position
-/// correction has had their errors from 0.2 rad a substep on, positionShare). Without it a
+/// 0.25 at half a radian a substep, the fastest whirl left to the soft step (the position
+/// correction has had such joints' errors from 0.2 rad a substep on, positionShare). Without it a
 /// swinging cloth of 10,000 pinned discs (the `joint_grid` benchmark) stretched 0.66 m, with it
 /// 0.17. Not for a group holding a prismatic or wheel joint: their line-and-angle rows lock the
 /// bodies' relative turning, and a chain of them between bodies of little inertia is a block
-/// one Gauss-Seidel pass does not converge, so that whatever its warm start adds stays (the
-/// soak: two sliders between a 1.3 kg disc and bodies of 1.7 and 60 kg gained 1.3% of their
-/// energy scale in half a second with 5% allowed a substep). Those keep no energy gain at all
+/// one Gauss-Seidel pass does not converge, so that whatever its warm start adds stays (two
+/// sliders between a 1.3 kg disc and bodies of 1.7 and 60 kg gain 1.3% of their energy scale in
+/// half a second with 5% allowed a substep). Those keep no energy gain at all
 /// (and their joints warm start with 0.8 of their impulses: sliderWarmStartFactor).
 constexpr double maxWarmStartGain = 0.25;
 
@@ -209,18 +209,18 @@ constexpr double maxWarmStartGain = 0.25;
 /// joint's centripetal pull adds a little (maxWarmStartGain). Where they were an impact that
 /// stopped the bodies once, J v = 0 now, and applying them again throws the bodies back apart
 /// for the solve to take back. A lone joint's solve does that exactly; in a chain, one
-/// Gauss-Seidel pass does not, and the rest is energy from nowhere: the soak found a 7 mm, 5 kg
-/// disc thrown at 189 m/s along a slider on a 3.6 kg disc pinned to a 107 kg block gaining
-/// 500 kJ (68% of its episode's energy scale) in its first step, each warm start tripling the
-/// trio's energy; and chains of sliders between 1 cm discs whose accumulated impulses drifted
-/// apart, cancelling on the shared disc, until one warm start spun it past 10^5 rad/s
-/// (docs/reliability.md, "Soak", fixes 11, 13 and 15). The test is over a group, not each joint:
+/// Gauss-Seidel pass does not, and the rest is energy from nowhere: a 7 mm, 5 kg disc thrown at
+/// 189 m/s along a slider on a 3.6 kg disc pinned to a 107 kg block gains 500 kJ in its first
+/// step without this, each warm start tripling the trio's energy; and chains of sliders between
+/// 1 cm discs see their accumulated impulses drift apart, cancelling on the shared disc, until
+/// one warm start spins it past 10^5 rad/s (docs/reliability.md). The test is over a group, not
+/// each joint:
 /// a hanging chain's links all fall together under gravity, so no one joint's guess takes
 /// energy out alone (each link's J v is zero), only all of them together. And over the passive
 /// rows only, the rows that may do work (motors, springs) applied whole before them: a motor
 /// hoisting a chain adds energy by right, but a spring in a group once spared the group's rigid
 /// rows too, and a wheel joint on a 1 kg disc of inverse inertia 577 gained 23 times its
-/// group's energy in a substep (fix 18).
+/// group's energy in a substep.
 float keptShare(double slope, double curvature, double allowed) {
   if (!(curvature > 0.0) || slope + 0.5 * curvature <= allowed) {
     return 1.0f; // nothing applied, or the whole of it is within the allowance
@@ -302,7 +302,7 @@ void warmStartJoints(WorldState& w, const StepContext& context) {
       std::visit([&](auto& data) { scaleImpulses(data, g.share[group], JointRows::passive); }, joint.data);
     }
     // Held to the speed limits only now: the warm starts of joints sharing a body may cancel on
-    // it, and a clamp between them would break that (soak fix 5); the trim needs them unclamped
+    // it, and a clamp between them would break that; the trim needs them unclamped
     // too, to stay linear in the share.
     clampJointBodies(w, joint.frame, context);
   }

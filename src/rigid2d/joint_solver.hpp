@@ -90,8 +90,8 @@ inline void storeVelocity(std::vector<BodyState>& states, std::uint32_t index, s
 /// While the frame turns little that is the same direction, and the soft step keeps a pendulum's
 /// energy to 0.3% over ten swings. Turning half a radian a substep (a whirl: 120 rad/s at 240
 /// substeps a second), half the bias is left behind across the joint and speeds the whirl up:
-/// the soak found a closed chain of three 1-2 cm discs, whirling on a revolute and a distance
-/// joint, gaining 2.9% of its energy scale in 1.5 s (and sliders likewise). A correction on the
+/// a closed chain of three 1-2 cm discs, whirling on a revolute and a distance joint, gains
+/// 2.9% of its energy scale in 1.5 s without this (and sliders likewise). A correction on the
 /// positions adds no velocity at all (as Box2D 2.4's and Jolt's position solves); it is not used
 /// throughout because the relax pass's projection then loses what the bias used to give back (a
 /// pendulum swinging at 86 degrees loses 1.2% of its energy a second). In between, a blend.
@@ -124,13 +124,12 @@ inline void turnBy(BodyState& s, float angle) {
 /// (Bullet's warmstartingFactor, 0.85, does so for every constraint). Their line-and-angle rows
 /// lock the bodies' relative turning, and chains of them between bodies of tiny inertia do not
 /// converge in a Gauss-Seidel pass: accumulated impulses drift apart, cancelling on a shared
-/// body, until one warm start spins it past 10^5 rad/s (soak fixes 11 and 13). Let go, that drift
-/// decays as 0.8^n; a lone slider's solve is exact and needs no warm start. The trim of each
-/// group's passive warm start (warmStartJoints, joint.cpp) keeps a group from gaining energy
-/// by it, but not a pair from swinging: dropped with fix 18, a 46 kg, 2 cm disc carrying a
-/// wheel joint's line, its wheel 54 m out along it, spun at 10^5 rad/s within a step and flung
-/// the wheel at the 400 m/s clamp through the floor (seed 41, episode 8,801, under a first
-/// version of soak fix 19); with it, it holds.
+/// body, until one warm start spins it past 10^5 rad/s. Let go, that drift decays as 0.8^n; a
+/// lone slider's solve is exact and needs no warm start. The trim of each group's passive warm
+/// start (warmStartJoints, joint.cpp) keeps a group from gaining energy by it, but not a pair
+/// from swinging: without this factor a 46 kg, 2 cm disc carrying a wheel joint's line, its
+/// wheel 54 m out along it, spins at 10^5 rad/s within a step and flings the wheel at the speed
+/// limit through the floor; with it, it holds (docs/reliability.md tells the history).
 constexpr float sliderWarmStartFactor = 0.8f;
 
 /// The effective mass matrix of a point constraint at anchors rA, rB (the 2x2 K with
@@ -222,9 +221,9 @@ inline void solvePointConstraint(Vec2f& linear, const JointFrame& f, BodyState& 
 /// whose anchor is 5 cm from its centre (inverse inertia 3000: turning is the cheap way to move
 /// the anchor) asks for a 6 rad turn, which moves the anchor nowhere near where the
 /// linearization said, and flips the disc's other joints round: the next warm start then applies
-/// their stored impulses in a geometry they were not found in. The soak found such a chain (a
-/// plank, the disc, a slider to a disc thrown at 115 m/s) gaining 60% of its energy in three
-/// steps. Capped, the correction goes in steps the linearization holds for, and the next
+/// their stored impulses in a geometry they were not found in: such a chain (a plank, the disc,
+/// a slider to a disc thrown at 115 m/s) gains 60% of its energy in three steps uncapped.
+/// Capped, the correction goes in steps the linearization holds for, and the next
 /// substeps finish it.
 constexpr float maxCorrectionTurn = 0.1396f;
 

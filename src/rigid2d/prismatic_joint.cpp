@@ -11,11 +11,11 @@
 // and the two one-sided limits, each solved with the block held. Since A's line turns with A,
 // the moment arms on A are taken about B's anchor (d + rA), not A's.
 //
-// Three departures from Box2D v3, each found by the soak test (tests/soak) with sliders on bodies
-// of little inertia (1 cm discs of several kg: inverse inertias 10^3 to 10^4): the block is
-// rigid, the limits hold it, and the end of each substep rebases the angular impulse on the
-// moments the bodies got in it. Each is explained where it is done; docs/reliability.md, "Soak",
-// fix 9. (Chains of such sliders also need the warm start trimmed: warmStartJoints, joint.cpp.)
+// Three departures from Box2D v3, for sliders on bodies of little inertia (1 cm discs of several
+// kg: inverse inertias 10^3 to 10^4): the block is rigid, the limits hold it, and the end of
+// each substep rebases the angular impulse on the moments the bodies got in it. Each is
+// explained where it is done (docs/reliability.md tells how they were found). Chains of such
+// sliders also need the warm start trimmed: warmStartJoints, joint.cpp.
 #include "rigid2d/prismatic_joint.hpp"
 
 #include <algorithm>
@@ -125,7 +125,7 @@ Mat22f blockMass(const SliderGeometry& g, const JointFrame& f) {
 /// velocities as they were. Alone, a limit on a body with little inertia kicks its spin through
 /// the smallest lever arm (a 1 cm, 4 kg disc carrying a 1 m rail: an axial impulse 5 cm off the
 /// line turns it at thousands of rad/s) and the block, solved next, turns it back, a
-/// Gauss-Seidel pair that gains energy each substep (the soak's sliders). Held, the row's mass
+/// Gauss-Seidel pair that gains energy each substep. Held, the row's mass
 /// is 1 / S with S = K_aa - K_ab K_bb^-1 K_ba, the Schur complement of the block in the joint's
 /// 3x3 effective mass K (rows: axial, normal, angle), and the update minimises the kinetic
 /// energy along a direction that changes only the limit's speed: it never adds energy in the
@@ -232,8 +232,7 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
   // the joint stiffness's bias rate with bias. Not soft, as Box2D v3's: with a body of little
   // inertia, the soft block (mass scale 0.9 at 60 Hz and 240 substeps a second) left a tenth
   // of the warm start's error in that body's spin, thousands of rad/s, and the positions
-  // integrated from it turned it half a turn a substep (the soak's sliders: NaN within seconds
-  // on four seeds of five).
+  // integrated from it turned it half a turn a substep (NaN within seconds).
   const Vec2f cdot{dot(g.normal, b.v - a.v) + g.s2 * b.w - g.s1 * a.w, b.w - a.w};
   Vec2f bias;
   if (useBias) {

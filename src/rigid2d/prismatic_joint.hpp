@@ -58,8 +58,8 @@ void applyAxial(const SliderGeometry& g, const JointFrame& f, BodyState& a, Body
 /// The effective masses along the axis and across it in the current geometry, kg. The rigid rows
 /// (limits, motors, the line) use these, not the step's-start values: a light body with little
 /// inertia on a long arm turns far within a step, its effective mass along a row changes by
-/// orders of magnitude, and an impulse from the stale mass overshoots, over and over (the soak
-/// test found worlds gaining energy without end that way). Springs keep the step's-start mass,
+/// orders of magnitude, and an impulse from the stale mass overshoots, over and over: energy
+/// without end. Springs keep the step's-start mass,
 /// which defines their stiffness.
 [[nodiscard]] float sliderAxialMassNow(const SliderGeometry& g, const JointFrame& f);
 [[nodiscard]] float sliderNormalMassNow(const SliderGeometry& g, const JointFrame& f);

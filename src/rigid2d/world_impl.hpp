@@ -398,7 +398,7 @@ void recordManifoldFrame(Contact& contact, const Transform2f& xfA, const Transfo
 /// that a shape within speculative reach of another always has a pair with it (as Box2D v3).
 /// Without it a 6 mm ball stopped by the static sweep half a millimetre above the floor, its
 /// fat box 0.2 mm short of the floor's, had no contact: it hung there while gravity wound its
-/// velocity up (the one-hour soak's 1% energy episodes).
+/// velocity up.
 [[nodiscard]] inline AABB reachBox(const Shape& s, const Transform2f& xf) {
   return enlarge(shapeBox(s, xf), speculativeDistance);
 }
