@@ -21,17 +21,7 @@ Box2D3Scene::Box2D3Scene(const Rigid2dScene& scene, int workers, bool continuous
   impl_->bodies.reserve(scene.bodies.size());
   for (const SceneBody& b : scene.bodies) {
     b2BodyDef bd = b2DefaultBodyDef();
-    switch (b.type) {
-    case rigid2d::BodyType::staticBody:
-      bd.type = b2_staticBody;
-      break;
-    case rigid2d::BodyType::kinematicBody:
-      bd.type = b2_kinematicBody;
-      break;
-    case rigid2d::BodyType::dynamicBody:
-      bd.type = b2_dynamicBody;
-      break;
-    }
+    bd.type = peerBodyType(b.type, b2_staticBody, b2_kinematicBody, b2_dynamicBody);
     bd.position = {b.position.x, b.position.y};
     bd.linearVelocity = {b.linearVelocity.x, b.linearVelocity.y};
     bd.angularVelocity = b.angularVelocity;
@@ -74,12 +64,7 @@ Box2D3Scene::Box2D3Scene(const Rigid2dScene& scene, int workers, bool continuous
     jd.base.bodyIdB = impl_->bodies[j.bodyB];
     jd.base.localFrameA.p = {j.anchor.x - a.position.x, j.anchor.y - a.position.y};
     jd.base.localFrameB.p = {j.anchor.x - b.position.x, j.anchor.y - b.position.y};
-    jd.enableLimit = j.enableLimit;
-    jd.lowerAngle = j.lowerAngle;
-    jd.upperAngle = j.upperAngle;
-    jd.enableMotor = j.enableMotor;
-    jd.motorSpeed = j.motorSpeed;
-    jd.maxMotorTorque = j.maxMotorTorque;
+    setLimitAndMotor(j, jd);
     b2CreateRevoluteJoint(impl_->world, &jd);
   }
 }

@@ -10,17 +10,7 @@ Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
   built.bodies.reserve(scene.bodies.size());
   for (const SceneBody& b : scene.bodies) {
     b2BodyDef bd;
-    switch (b.type) {
-    case rigid2d::BodyType::staticBody:
-      bd.type = b2_staticBody;
-      break;
-    case rigid2d::BodyType::kinematicBody:
-      bd.type = b2_kinematicBody;
-      break;
-    case rigid2d::BodyType::dynamicBody:
-      bd.type = b2_dynamicBody;
-      break;
-    }
+    bd.type = peerBodyType(b.type, b2_staticBody, b2_kinematicBody, b2_dynamicBody);
     bd.position.Set(b.position.x, b.position.y);
     bd.angularVelocity = b.angularVelocity;
     bd.linearVelocity = b2Vec2(b.linearVelocity.x, b.linearVelocity.y);
@@ -58,12 +48,7 @@ Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
   for (const SceneJoint& j : scene.joints) {
     b2RevoluteJointDef jd;
     jd.Initialize(built.bodies[j.bodyA], built.bodies[j.bodyB], b2Vec2(j.anchor.x, j.anchor.y));
-    jd.enableLimit = j.enableLimit;
-    jd.lowerAngle = j.lowerAngle;
-    jd.upperAngle = j.upperAngle;
-    jd.enableMotor = j.enableMotor;
-    jd.motorSpeed = j.motorSpeed;
-    jd.maxMotorTorque = j.maxMotorTorque;
+    setLimitAndMotor(j, jd);
     built.world->CreateJoint(&jd);
   }
   return built;

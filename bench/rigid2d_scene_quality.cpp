@@ -97,12 +97,7 @@ ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings&
     jd.bodyB = built.bodies[j.bodyB];
     jd.localAnchorA = j.anchor - scene.bodies[j.bodyA].position; // bodies start unrotated
     jd.localAnchorB = j.anchor - scene.bodies[j.bodyB].position;
-    jd.enableLimit = j.enableLimit;
-    jd.lowerAngle = j.lowerAngle;
-    jd.upperAngle = j.upperAngle;
-    jd.enableMotor = j.enableMotor;
-    jd.motorSpeed = j.motorSpeed;
-    jd.maxMotorTorque = j.maxMotorTorque;
+    setLimitAndMotor(j, jd);
     built.world.createJoint(jd);
   }
   return built;

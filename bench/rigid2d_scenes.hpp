@@ -67,7 +67,33 @@ struct SceneBody {
   bool awake = true;            ///< false: starts asleep (v3's smash), where the scene sleeps
 };
 
-/// A scene as plain data: what both engines build.
+/// A scene body's type in a peer engine's own enumeration (Box2D 2.4.1's and v3's b2BodyType
+/// name theirs alike but are different types).
+template <class PeerType> [[nodiscard]] PeerType peerBodyType(rigid2d::BodyType type, PeerType staticType,
+                                                              PeerType kinematicType, PeerType dynamicType) {
+  switch (type) {
+  case rigid2d::BodyType::staticBody:
+    return staticType;
+  case rigid2d::BodyType::kinematicBody:
+    return kinematicType;
+  case rigid2d::BodyType::dynamicBody:
+    break;
+  }
+  return dynamicType;
+}
+
+/// Copies a scene joint's limit and motor into a revolute joint definition of any of the engines
+/// (Impetus', Box2D 2.4.1's and v3's name these fields alike).
+template <class RevoluteDef> void setLimitAndMotor(const SceneJoint& j, RevoluteDef& def) {
+  def.enableLimit = j.enableLimit;
+  def.lowerAngle = j.lowerAngle;
+  def.upperAngle = j.upperAngle;
+  def.enableMotor = j.enableMotor;
+  def.motorSpeed = j.motorSpeed;
+  def.maxMotorTorque = j.maxMotorTorque;
+}
+
+/// A scene as plain data: what every engine builds.
 struct Rigid2dScene {
   std::string name;
   std::vector<SceneBody> bodies;

@@ -3,6 +3,7 @@
 // stand on their segment floors, the motor turns the tumbler's drum at its speed, and the smash
 // sleeps until it is hit and conserves momentum after.
 #include "rigid2d_scenes.hpp"
+#include "scene_checks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,28 +17,9 @@ using impetus::Transform2f;
 using impetus::Vec2f;
 using impetus::rigid2d::BodyType;
 namespace bench = impetus::bench;
-
-std::size_t countOf(const bench::Rigid2dScene& scene, BodyType type) {
-  std::size_t n = 0;
-  for (const bench::SceneBody& b : scene.bodies) {
-    n += b.type == type ? 1 : 0;
-  }
-  return n;
-}
-
-std::vector<Transform2f> startTransforms(const bench::Rigid2dScene& scene) {
-  std::vector<Transform2f> start;
-  for (const bench::SceneBody& b : scene.bodies) {
-    start.push_back({b.position, impetus::Rot2f::identity()});
-  }
-  return start;
-}
-
-void step(bench::ImpetusScene& built, int steps) {
-  for (int i = 0; i < steps; ++i) {
-    built.world.step(bench::sceneTimeStep);
-  }
-}
+using bench::test::countOf;
+using bench::test::startTransforms;
+using bench::test::step;
 
 TEST(ManyPyramids, is_box2d_v3s_four_hundred_pyramids_on_twenty_segment_floors) {
   const bench::Rigid2dScene scene = bench::manyPyramidsScene();

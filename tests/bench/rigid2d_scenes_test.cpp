@@ -2,6 +2,7 @@
 // no initial overlap) and behave in Impetus: finite, standing, falling where they should. The
 // quality figures the benchmark prints (sink, overlap) measure what they say.
 #include "rigid2d_scenes.hpp"
+#include "scene_checks.hpp"
 
 #include <impetus/error.hpp>
 
@@ -18,20 +19,9 @@ using impetus::Transform2f;
 using impetus::Vec2f;
 using impetus::rigid2d::BodyType;
 namespace bench = impetus::bench;
-
-std::size_t countOf(const bench::Rigid2dScene& scene, BodyType type) {
-  std::size_t n = 0;
-  for (const bench::SceneBody& b : scene.bodies) {
-    n += b.type == type ? 1 : 0;
-  }
-  return n;
-}
-
-void step(bench::ImpetusScene& built, int steps) {
-  for (int i = 0; i < steps; ++i) {
-    built.world.step(bench::sceneTimeStep);
-  }
-}
+using bench::test::countOf;
+using bench::test::startTransforms;
+using bench::test::step;
 
 TEST(LargePyramid, is_5050_boxes_of_half_size_half_a_metre_on_a_200_by_2_ground_box) {
   const bench::Rigid2dScene scene = bench::largePyramidScene();
@@ -61,10 +51,7 @@ TEST(LargePyramid, is_5050_boxes_of_half_size_half_a_metre_on_a_200_by_2_ground_
 
 TEST(LargePyramid, starts_touching_without_overlap) {
   const bench::Rigid2dScene scene = bench::largePyramidScene(30);
-  std::vector<Transform2f> start;
-  for (const bench::SceneBody& b : scene.bodies) {
-    start.push_back({b.position, impetus::Rot2f::identity()});
-  }
+  const std::vector<Transform2f> start = startTransforms(scene);
   EXPECT_LT(bench::largestOverlap(scene, start), 1.0e-5f);
   EXPECT_FLOAT_EQ(bench::topSink(scene, start), 0.0f);
 }
@@ -92,10 +79,7 @@ TEST(PyramidRow, is_ten_pyramids_of_base_twenty_side_by_side) {
   EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 10u * 210u);
   EXPECT_EQ(countOf(scene, BodyType::staticBody), 1u);
   ASSERT_EQ(scene.tops.size(), 10u);
-  std::vector<Transform2f> start;
-  for (const bench::SceneBody& b : scene.bodies) {
-    start.push_back({b.position, impetus::Rot2f::identity()});
-  }
+  const std::vector<Transform2f> start = startTransforms(scene);
   EXPECT_LT(bench::largestOverlap(scene, start), 1.0e-5f);
   // Every box stands on the ground: the ground's top is y = 0 and it is wider than the row.
   const bench::SceneShape& ground = scene.shapes[0];
@@ -144,10 +128,7 @@ TEST(Rain, has_the_requested_circles_in_an_open_box_as_wide_as_the_columns) {
 
 TEST(Rain, circles_land_and_stay_in_the_box) {
   const bench::Rigid2dScene scene = bench::circleRainScene(500);
-  std::vector<Transform2f> start;
-  for (const bench::SceneBody& b : scene.bodies) {
-    start.push_back({b.position, impetus::Rot2f::identity()});
-  }
+  const std::vector<Transform2f> start = startTransforms(scene);
   EXPECT_FLOAT_EQ(bench::largestOverlap(scene, start), 0.0f);
   bench::ImpetusScene built = bench::buildImpetusScene(scene);
   step(built, 150); // 2.5 s: the top row (7.75 m up) has landed
@@ -170,10 +151,7 @@ TEST(KinematicTumbler, is_a_turning_kinematic_drum_holding_a_grid_of_small_boxes
   EXPECT_EQ(countOf(scene, BodyType::dynamicBody), 45u * 45u);
   EXPECT_EQ(scene.shapes.size(), 4u + 45u * 45u);
   EXPECT_GT(scene.bodies[0].angularVelocity, 0.4f);
-  std::vector<Transform2f> start;
-  for (const bench::SceneBody& b : scene.bodies) {
-    start.push_back({b.position, impetus::Rot2f::identity()});
-  }
+  const std::vector<Transform2f> start = startTransforms(scene);
   EXPECT_FLOAT_EQ(bench::largestOverlap(scene, start), 0.0f);
 
   const bench::Rigid2dScene small = bench::kinematicTumblerScene(10);
@@ -197,10 +175,7 @@ TEST(SmashAwake, is_a_block_of_small_boxes_and_a_fast_big_box_in_zero_gravity) {
   EXPECT_FLOAT_EQ(scene.gravity.y, 0.0f);
   EXPECT_FLOAT_EQ(scene.bodies.back().linearVelocity.x, 40.0f);
   EXPECT_TRUE(scene.bodies.back().bullet);
-  std::vector<Transform2f> start;
-  for (const bench::SceneBody& b : scene.bodies) {
-    start.push_back({b.position, impetus::Rot2f::identity()});
-  }
+  const std::vector<Transform2f> start = startTransforms(scene);
   EXPECT_LT(bench::largestOverlap(scene, start), 1.0e-5f);
 }
 
@@ -235,10 +210,7 @@ TEST(JointGrid, is_a_net_of_circles_hanging_from_seven_pins_and_holds_together) 
   EXPECT_EQ(scene.joints.size(), 2u * 10u * 9u); // down and left links
   bench::ImpetusScene built = bench::buildImpetusScene(scene);
   EXPECT_EQ(built.world.jointCount(), scene.joints.size());
-  std::vector<Transform2f> start;
-  for (const bench::SceneBody& b : scene.bodies) {
-    start.push_back({b.position, impetus::Rot2f::identity()});
-  }
+  const std::vector<Transform2f> start = startTransforms(scene);
   EXPECT_LT(bench::largestJointGap(scene, start), 1e-6f);
   step(built, 120);
   const std::vector<Transform2f> xf = bench::bodyTransforms(built);
