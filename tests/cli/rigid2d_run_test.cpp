@@ -290,7 +290,8 @@ TEST(Rigid2dRun, a_conveyor_carries_its_crates_at_its_speed_and_filtered_boxes_p
   const std::string out = tempPath("conveyor.csv");
   const CliRun run = impetus({"run", scene("conveyor.json"), "--steps", "180", "--every", "180", "--out", out});
   ASSERT_EQ(run.status, 0) << run.err;
-  const auto& end = byStep(readCsv(out)).at(180);
+  const auto steps = byStep(readCsv(out));
+  const auto& end = steps.at(180);
   // After 3 s the crates ride at the belt's 2 m/s (friction 0.8 brings them there within 0.3 s).
   for (const char* crate : {"crate1", "crate2"}) {
     EXPECT_NEAR(end.at(crate)[vx], 2.0, 0.02) << crate;
