@@ -54,7 +54,7 @@ void solveBookImpulse(WorldState& w, float dt) {
   integrateVelocities(w, context);
   // Joints (the book has none: they are the soft step's, solved once per frame here).
   prepareJoints(w, context);
-  warmStartJoints(w, context);
+  warmStartJoints(w);
   solveJoints(w, context, true);
   const std::uint32_t staticIndex = w.staticIndex();
   for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {

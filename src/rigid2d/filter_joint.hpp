@@ -1,4 +1,4 @@
-// A joint that only turns collision off between its two bodies (FilterJointDef): no rows, so
+// A joint that only turns collision off between its two bodies (FilterJointDef): no parts, so
 // every solver stage passes it by. It keeps the bodies in one island, as every joint does.
 #pragma once
 
@@ -11,9 +11,8 @@ struct FilterJoint {
 };
 
 inline void prepareJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, const StepContext& /*context*/) {}
-inline void scaleImpulses(FilterJoint& /*joint*/, float /*scale*/, JointRows /*rows*/) {}
 inline void warmStartJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, std::vector<BodyState>& /*states*/,
-                           std::uint32_t /*staticIndex*/, JointRows /*rows*/) {}
+                           std::uint32_t /*staticIndex*/) {}
 inline void solveJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, std::vector<BodyState>& /*states*/,
                        std::uint32_t /*staticIndex*/, const StepContext& /*context*/, bool /*useBias*/) {}
 [[nodiscard]] inline JointReaction jointReaction(const FilterJoint& /*joint*/, const JointFrame& /*frame*/,

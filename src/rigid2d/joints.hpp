@@ -41,15 +41,9 @@ struct Joint {
 
 // joint.cpp: the joints' part of the step, in joint slot order.
 void prepareJoints(WorldState& w, const StepContext& context);
-/// The jointed groups (JointGroups) of the joints prepared this step; called by prepareJoints.
-void buildJointGroups(WorldState& w);
-/// Every joint's warm start, after the contacts': first the rows that may do work (motors,
-/// springs), whole, then the passive rest, trimmed in each jointed group so as to add at most a
-/// quarter of the group's kinetic energy (none with a slider in it), joint.cpp.
-void warmStartJoints(WorldState& w, const StepContext& context);
+/// Every joint's warm start: its parts' accumulated impulses applied again, after the contacts'.
+void warmStartJoints(WorldState& w);
 void solveJoints(WorldState& w, const StepContext& context, bool useBias);
-/// Joint errors corrected on positions only (after the relax pass).
-void correctJointPositions(WorldState& w, const StepContext& context);
 /// Reaction readouts and break events, after the substeps.
 void finishJoints(WorldState& w, const StepContext& context);
 

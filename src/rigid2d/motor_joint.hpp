@@ -6,12 +6,11 @@
 
 namespace impetus::rigid2d::detail {
 
+/// A point part of bounded magnitude (the linear drive) and a motor part on the angle.
 struct MotorJoint {
-  MotorJointDef def; ///< the settings (the offsets change at run time; the anchors are not used)
-  // Accumulated impulses: solver state, kept from step to step for warm starting.
-  Vec2f linearImpulse;         ///< N s per substep, on B (at B's origin)
-  float angularImpulse = 0.0f; ///< N m s per substep, on B
-  // This step's constants.
+  MotorJointDef def;   ///< the settings (the offsets change at run time; the anchors are not used)
+  BlockPart<2> linear; ///< N s per substep, on B (at B's origin)
+  MotorPart angular;   ///< N m s per substep, on B
   /// From A's centre of mass to the target point (A's origin + linearOffset, a point fixed in
   /// A), world axes at the step's start, m.
   Vec2f targetA;
@@ -19,22 +18,12 @@ struct MotorJoint {
   Vec2f originB;
   /// The angular error angleB - angleA - angularOffset at the step's start, in (-pi, pi], rad.
   float angleError = 0.0f;
-  float angularMass = 0.0f; ///< 1 / (iA + iB), kg m^2 (0: neither body can turn)
 };
 
 void prepareJoint(MotorJoint& joint, const JointFrame& frame, const StepContext& context);
-/// Scales the accumulated impulses of `rows` (what the warm start applied): warmStartJoints' line
-/// search. Every row of the joint may do work (it drives B toward a target).
-inline void scaleImpulses(MotorJoint& joint, float scale, JointRows rows) {
-  if (!includes(rows, JointRows::working)) {
-    return;
-  }
-  joint.linearImpulse = joint.linearImpulse * scale;
-  joint.angularImpulse = joint.angularImpulse * scale;
-}
 /// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex, JointRows rows);
+                    std::uint32_t staticIndex);
 void solveJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).

@@ -26,66 +26,32 @@ void prepareJoint(MouseJoint& joint, const JointFrame& frame, const StepContext&
   const float damping = mouseAngularDampingRate * context.h;
   joint.angularDamping = {0.0f, damping / (1.0f + damping), 1.0f / (1.0f + damping)};
   if (frame.iB == 0.0f) {
-    joint.angularImpulse = 0.0f;
+    joint.angular.impulse = 0.0f;
   }
 }
 
 void warmStartJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex, JointRows rows) {
-  if (!includes(rows, JointRows::working)) {
-    return;
-  }
-  BodyState b = states[frame.indexB];
-  const Vec2f rB = currentAnchor(b, frame.frameB);
-  b.v += joint.linearImpulse * frame.mB;
-  b.w += frame.iB * (cross(rB, joint.linearImpulse) + joint.angularImpulse);
-  storeVelocity(states, frame.indexB, staticIndex, b);
+                    std::uint32_t staticIndex) {
+  withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
+    joint.angular.warmStart(angleRow(), frame, a, b);
+    joint.linear.warmStart(pointRows({}, currentAnchor(b, frame.frameB)), frame, a, b);
+  });
 }
 
 void solveJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias) {
-  BodyState b = states[frame.indexB];
-
-  if (frame.iB > 0.0f) {
-    const Softness& soft = joint.angularDamping;
-    const float impulse = -soft.massScale * b.w / frame.iB - soft.impulseScale * joint.angularImpulse;
-    joint.angularImpulse += impulse;
-    b.w += frame.iB * impulse;
-  }
-
-  const Vec2f rB = currentAnchor(b, frame.frameB);
-  const Vec2f cdot = b.v + cross(b.w, rB);
-  Vec2f bias;
-  float massScale = 1.0f;
-  float impulseScale = 0.0f;
-  const Vec2f c = b.dp + rB + joint.targetOffset; // m: anchor minus target
-  if (joint.def.hertz > 0.0f) {
-    bias = c * joint.linearSoftness.biasRate;
-    massScale = joint.linearSoftness.massScale;
-    impulseScale = joint.linearSoftness.impulseScale;
-  } else if (useBias) {
-    bias = c * frame.softness.biasRate;
-    massScale = frame.softness.massScale;
-    impulseScale = frame.softness.impulseScale;
-  }
-  const Vec2f solved = solve22(pointMass(frame, {}, rB), cdot + bias);
-  const Vec2f old = joint.linearImpulse;
-  joint.linearImpulse = old - solved * massScale - old * impulseScale;
-  // The pull is bounded in magnitude, whatever its direction: clamp to a disc.
-  const float maxImpulse = joint.def.maxForce * context.h;
-  const float magnitude = length(joint.linearImpulse);
-  if (magnitude > maxImpulse) {
-    joint.linearImpulse = joint.linearImpulse * (maxImpulse / magnitude);
-  }
-  const Vec2f impulse = joint.linearImpulse - old;
-  b.v += impulse * frame.mB;
-  b.w += frame.iB * cross(rB, impulse);
-
-  storeVelocity(states, frame.indexB, staticIndex, b);
+  withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
+    joint.angular.solve(angleRow(), frame, a, b, 0.0f, joint.angularDamping);
+    const Vec2f rB = currentAnchor(b, frame.frameB);
+    const Vec2f c = b.dp + rB + joint.targetOffset; // m: anchor minus target
+    joint.linear.solve(pointRows({}, rB), frame, a, b, {c.x, c.y},
+                       joint.def.hertz > 0.0f ? joint.linearSoftness : rigidRowSoftness(frame, useBias),
+                       joint.def.maxForce * context.h);
+  });
 }
 
 JointReaction jointReaction(const MouseJoint& joint, const JointFrame&, float inverseH) {
-  return {joint.linearImpulse * inverseH, joint.angularImpulse * inverseH};
+  return {asVec(joint.linear.impulse) * inverseH, joint.angular.impulse * inverseH};
 }
 
 } // namespace impetus::rigid2d::detail

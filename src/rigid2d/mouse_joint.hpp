@@ -12,30 +12,20 @@ namespace impetus::rigid2d::detail {
 /// velocity constraint of 0.5 Hz, damping ratio 0.1: about 0.65/s).
 inline constexpr float mouseAngularDampingRate = 0.6f;
 
+/// A soft point part of bounded magnitude and a damping row part on the angle.
 struct MouseJoint {
-  MouseJointDef def; ///< the settings (the target changes at run time; localAnchorA is not used)
-  // Accumulated impulses: solver state, kept from step to step for warm starting.
-  Vec2f linearImpulse;         ///< N s per substep, on B at its anchor
-  float angularImpulse = 0.0f; ///< N m s per substep: the angular damping on B
-  // This step's constants.
+  MouseJointDef def;       ///< the settings (the target changes at run time; localAnchorA is not used)
+  BlockPart<2> linear;     ///< N s per substep, on B at its anchor
+  RowPart angular;         ///< N m s per substep: the angular damping on B
   Vec2f targetOffset;      ///< B's centre of mass minus the target at the step's start, m
   Softness linearSoftness; ///< the spring (hertz, dampingRatio)
   Softness angularDamping; ///< the implicit angular damper (no bias)
 };
 
 void prepareJoint(MouseJoint& joint, const JointFrame& frame, const StepContext& context);
-/// Scales the accumulated impulses of `rows` (what the warm start applied): warmStartJoints' line
-/// search. Every row of the joint may do work (it drives B toward a target).
-inline void scaleImpulses(MouseJoint& joint, float scale, JointRows rows) {
-  if (!includes(rows, JointRows::working)) {
-    return;
-  }
-  joint.linearImpulse = joint.linearImpulse * scale;
-  joint.angularImpulse = joint.angularImpulse * scale;
-}
 /// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                    std::uint32_t staticIndex, JointRows rows);
+                    std::uint32_t staticIndex);
 void solveJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).

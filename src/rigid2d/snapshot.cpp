@@ -28,7 +28,7 @@ using detail::Shape;
 using detail::WorldState;
 
 constexpr std::uint32_t snapshotMagic = 0x53443249; // "I2DS"
-constexpr std::uint32_t snapshotVersion = 2;
+constexpr std::uint32_t snapshotVersion = 3;
 
 static_assert(std::is_trivially_copyable_v<Contact>);
 static_assert(std::is_trivially_copyable_v<Joint>);

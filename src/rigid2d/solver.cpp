@@ -1,13 +1,11 @@
 // The soft step (after Erin Catto's Solver2D and Box2D v3): the order of one step's solve.
 //
 // The awake bodies get compact solver indices; then, `substeps` times: integrate velocities
-// (gravity, applied forces, damping), warm start the contacts with their accumulated impulses
-// and then the joints (each jointed group's warm start measured with the contacts' support in:
-// warmStartJoints), solve them with bias (soft constraints that push overlap apart at a bounded
-// speed), integrate positions (as deltas), relax (solve again without bias, taking back the
-// velocity the bias added), and correct on the positions the share of a fast-turning joint's
-// error its bias left alone (positionShare, joint_solver.hpp). Restitution is applied once at
-// the end, and the impulses are stored for the next step.
+// (gravity, applied forces, damping), warm start the contacts and joints with their accumulated
+// impulses, solve them with bias (soft constraints that push overlap apart at a bounded speed),
+// integrate positions (as deltas, at speeds held within the world's limits: capVelocity), and
+// relax (solve again without bias, taking back the velocity the bias added). Restitution is
+// applied once at the end, and the impulses are stored for the next step.
 #include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
 
@@ -66,6 +64,7 @@ void buildSolverBodies(WorldState& w) {
       sim.dynamic = b.type == BodyType::dynamicBody;
       sim.acceleration = sim.dynamic ? gravity * b.gravityScale + b.force * b.inverseMass : Vec2f{};
       sim.angularAcceleration = sim.dynamic ? b.inverseInertia * b.torque : 0.0f;
+      sim.allowFastRotation = b.allowFastRotation;
       sim.linearDamping = b.linearDamping;
       sim.angularDamping = b.angularDamping;
     }
@@ -84,17 +83,6 @@ void integrateVelocities(WorldState& w, const StepContext& context) {
       // Implicit damping: stable for any coefficient.
       s.v = (s.v + sim.acceleration * h) * (1.0f / (1.0f + h * sim.linearDamping));
       s.w = (s.w + sim.angularAcceleration * h) * (1.0f / (1.0f + h * sim.angularDamping));
-      clampVelocity(s, context);
-    }
-  });
-}
-
-void clampVelocities(WorldState& w, const StepContext& context) {
-  w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
-    for (std::uint32_t i = begin; i < end; ++i) {
-      if (w.sims[i].dynamic) {
-        clampVelocity(w.states[i], context);
-      }
     }
   });
 }
@@ -104,8 +92,9 @@ void integratePositions(WorldState& w, const StepContext& context) {
   w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t i = begin; i < end; ++i) {
       BodyState& s = w.states[i];
-      if (w.sims[i].dynamic) {
-        clampVelocity(s, context);
+      const BodySim& sim = w.sims[i];
+      if (sim.dynamic) {
+        capVelocity(s, context, sim.allowFastRotation);
       }
       s.dp += s.v * h;
       const float angle = s.w * h;
@@ -124,7 +113,6 @@ StepContext makeStepContext(const WorldState& w, float dt, int substeps) {
   context.maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
   // Joints are held at the world's stiffness unless they have their own (joint.cpp).
   context.jointSoftness = jointSoftnessFor(w.def.jointHertz, w.def.jointDampingRatio, context);
-  context.positionCorrection = positionCorrectionFor(context.jointSoftness, context);
   context.warmStarting = w.def.enableWarmStarting;
   return context;
 }
@@ -137,16 +125,14 @@ void solve(WorldState& w, float dt) {
   for (int substep = 0; substep < context.substeps; ++substep) {
     integrateVelocities(w, context);
     warmStartContacts(w);
-    warmStartJoints(w, context);
+    warmStartJoints(w);
     solveJoints(w, context, true);
     solveContacts(w, context, true);
     integratePositions(w, context);
     solveJoints(w, context, false); // relax
     solveContacts(w, context, false);
-    correctJointPositions(w, context);
   }
   applyRestitution(w);
-  clampVelocities(w, context); // what the relax and restitution passes added, too
   storeImpulses(w);
   finishJoints(w, context);
 }

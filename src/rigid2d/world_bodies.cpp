@@ -100,6 +100,7 @@ BodyId World::createBody(const BodyDef& def) {
   b.gravityScale = def.gravityScale;
   b.fixedRotation = def.fixedRotation;
   b.bullet = def.bullet;
+  b.allowFastRotation = def.allowFastRotation;
   b.enableSleep = def.enableSleep;
   b.awake = def.isAwake;
   b.userData = def.userData;

@@ -73,6 +73,7 @@ struct Body {
   float linearDamping = 0.0f, angularDamping = 0.0f, gravityScale = 1.0f;
   bool fixedRotation = false;
   bool bullet = false;
+  bool allowFastRotation = false; ///< BodyDef::allowFastRotation
   bool enableSleep = true;
   bool awake = true;
   float sleepTime = 0.0f;            ///< s spent slower than the sleep tolerances
@@ -175,11 +176,12 @@ static_assert(sizeof(BodyState) == 8 * sizeof(float));
 /// What integrating a moving body needs, packed for the solver: accelerations from gravity and
 /// the applied force and torque, and damping.
 struct BodySim {
-  Vec2f acceleration;            ///< m/s^2
-  float angularAcceleration = 0; ///< rad/s^2
-  float linearDamping = 0;       ///< 1/s
-  float angularDamping = 0;      ///< 1/s
-  bool dynamic = false;          ///< kinematic bodies keep their velocity
+  Vec2f acceleration;             ///< m/s^2
+  float angularAcceleration = 0;  ///< rad/s^2
+  float linearDamping = 0;        ///< 1/s
+  float angularDamping = 0;       ///< 1/s
+  bool dynamic = false;           ///< kinematic bodies keep their velocity
+  bool allowFastRotation = false; ///< BodyDef::allowFastRotation: no cap on the spin
 };
 
 /// What the contact solver reads of a body each step, packed: the Body itself is large and cold,
@@ -200,32 +202,6 @@ inline std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t 
   }
   return i;
 }
-
-/// A joint's rows as its warm start applies them (warmStartJoints, joint.cpp): those that may do
-/// work on the bodies (motors, springs and other soft rows, which drive them or give back stored
-/// energy) and the passive rest (rigid rows, limits, friction), which only redirect or take
-/// kinetic energy. Every row of a joint to a kinematic body may do work (the body moves as told).
-enum class JointRows : std::uint8_t { none = 0, working = 1, passive = 2, all = 3 };
-
-/// The jointed groups of a step: dynamic bodies joined through joints (not through static or
-/// kinematic bodies, which nothing moves), for the joints' warm start (joint.cpp). Scratch,
-/// rebuilt each step.
-struct JointGroups {
-  static constexpr std::uint32_t noGroup = 0xffffffffu;
-  std::vector<std::uint32_t> parent;      ///< union-find by solver index
-  std::vector<std::uint8_t> isMember;     ///< by solver index
-  std::vector<std::uint32_t> members;     ///< solver indices of the dynamic bodies in joints
-  std::vector<std::uint32_t> memberGroup; ///< each member's group: its root's solver index
-  std::vector<std::uint32_t> jointGroup;  ///< by joint slot: its group, or noGroup (asleep, or no dynamic body)
-  std::vector<JointRows> workingRows;     ///< by joint slot: the rows that may do work (none, working or all)
-  std::vector<float> memberMass;          ///< kg
-  std::vector<float> memberInertia;       ///< kg m^2 (0: fixed rotation)
-  std::vector<BodyState> before;          ///< the members' velocities before the passive rows' warm start
-  std::vector<double> slope, curvature;   ///< by group: the passive rows' warm start's line search (J, J)
-  std::vector<double> energy;             ///< by group: the kinetic energy before the passive rows' warm start, J
-  std::vector<std::uint8_t> slider;       ///< by group: 1 if it holds a prismatic or wheel joint
-  std::vector<float> share;               ///< by group: the share of the passive rows' warm start kept
-};
 
 struct ContactSolverData; // contact_solver.cpp
 struct Joint;             // joints.hpp
@@ -295,7 +271,6 @@ struct WorldState {
   std::vector<BulletStart> bullets;        ///< scratch of the finalize pass
   std::vector<std::uint32_t> islandParent; ///< scratch of the sleep pass (union-find by body slot)
   std::vector<float> islandRest;           ///< scratch of the sleep pass (least rest time per island)
-  JointGroups jointGroups;                 ///< scratch of the joints' warm start
 
   ContactEvents contactEvents;
   SensorEvents sensorEvents;
@@ -331,11 +306,10 @@ struct StepContext {
   float h = 0.0f;        ///< substep, s
   float inverseH = 0.0f; ///< 1/s
   int substeps = 1;
-  Softness jointSoftness;          ///< the stiffness that holds joints together (jointHertz, jointDampingRatio)
-  float positionCorrection = 0.0f; ///< fraction of a joint's error corrected on positions a substep (0: by bias)
-  bool warmStarting = true;        ///< WorldDef::enableWarmStarting
-  float maxLinearSpeed = 0.0f;     ///< m/s (WorldDef::maxLinearSpeed)
-  float maxAngularSpeed = 0.0f;    ///< rad/s: the largest turn per substep (a quarter turn) over h
+  Softness jointSoftness;       ///< the stiffness that holds joints together (jointHertz, jointDampingRatio)
+  bool warmStarting = true;     ///< WorldDef::enableWarmStarting
+  float maxLinearSpeed = 0.0f;  ///< m/s (WorldDef::maxLinearSpeed)
+  float maxAngularSpeed = 0.0f; ///< rad/s: the largest turn per substep (a quarter turn) over h
 };
 
 /// A joint's soft rows at `hertz` and damping ratio `zeta`: stiffer than a quarter of the substep
@@ -344,24 +318,20 @@ struct StepContext {
   return makeSoft(std::min(hertz, 0.25f * context.inverseH), zeta, context.h);
 }
 
-/// The share of a joint's error corrected on positions in a substep, where it is (fast-turning
-/// joints): the rate the bias would take it back at.
-[[nodiscard]] inline float positionCorrectionFor(const Softness& soft, const StepContext& context) {
-  return std::min(1.0f, soft.biasRate * context.h);
-}
-
-/// Holds a dynamic body's velocity within the step's speed limits. Applied where velocities are
-/// integrated, after each joint's solve and before positions are integrated: the constraints may
-/// push a body past the limits in between (a light lever on a joint, say), and a constraint
-/// solved with a runaway velocity, or a position step at one, is how a world blows up.
-[[gnu::always_inline]] inline void clampVelocity(BodyState& s, const StepContext& context) {
+/// The one cap on how fast a dynamic body moves: at most maxLinearSpeed, and at most a quarter
+/// turn a substep unless it allows fast rotation (a rotation delta integrated from a larger turn
+/// no longer follows the spin). Applied where positions are integrated, so that no position step
+/// is taken at a faster speed, whatever the constraints asked for.
+[[gnu::always_inline]] inline void capVelocity(BodyState& s, const StepContext& context, bool allowFastRotation) {
   const float maxSpeed = context.maxLinearSpeed;
   // Each component first, so that an overflowed (infinite) velocity still has a direction.
   s.v = {std::clamp(s.v.x, -maxSpeed, maxSpeed), std::clamp(s.v.y, -maxSpeed, maxSpeed)};
   if (lengthSquared(s.v) > maxSpeed * maxSpeed) {
     s.v = normalize(s.v) * maxSpeed;
   }
-  s.w = std::clamp(s.w, -context.maxAngularSpeed, context.maxAngularSpeed);
+  if (!allowFastRotation) {
+    s.w = std::clamp(s.w, -context.maxAngularSpeed, context.maxAngularSpeed);
+  }
 }
 
 /// Whether two shapes' filters let them collide: A and B collide when each one's category is in
@@ -417,7 +387,6 @@ void buildSolverBodies(WorldState& w);
 void integrateVelocities(WorldState& w, const StepContext& context);
 void integratePositions(WorldState& w, const StepContext& context);
 /// Holds every dynamic body within maxLinearSpeed and the largest turn per substep.
-void clampVelocities(WorldState& w, const StepContext& context);
 
 // book_impulse.cpp
 /// The book's collision response (ch. 9-10, errata fixed): one step of semi-implicit Euler and

@@ -327,7 +327,7 @@ float World::revoluteAngle(JointId id) const {
 
 float World::revoluteMotorTorque(JointId id) const {
   const auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
-  return r.motorImpulse * impl_->lastInverseH;
+  return r.motor.impulse * impl_->lastInverseH;
 }
 
 void World::setRevoluteMotor(JointId id, bool enable, float speed, float maxTorque) {
@@ -356,7 +356,7 @@ float World::prismaticTranslation(JointId id) const {
 
 float World::prismaticMotorForce(JointId id) const {
   const auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
-  return p.motorImpulse * impl_->lastInverseH;
+  return p.motor.impulse * impl_->lastInverseH;
 }
 
 void World::setPrismaticMotor(JointId id, bool enable, float speed, float maxForce) {
@@ -389,7 +389,7 @@ void World::setDistanceJointLength(JointId id, float length) {
 
 float World::wheelMotorTorque(JointId id) const {
   const auto& wj = jointData<detail::WheelJoint>(*impl_, id, "wheel");
-  return wj.motorImpulse * impl_->lastInverseH;
+  return wj.motor.impulse * impl_->lastInverseH;
 }
 
 void World::setWheelMotor(JointId id, bool enable, float speed, float maxTorque) {

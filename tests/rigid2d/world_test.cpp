@@ -558,5 +558,27 @@ TEST(World2D, cast_shape_hits_where_geometry_says) {
       "translation.x");
 }
 
+// The spin cap: a free body spins at most a quarter turn a substep (pi/4 x 240 = 188 rad/s at 60 Hz
+// and 4 substeps), unless it allows fast rotation, when it keeps its spin (no torque, no damping:
+// the spin is conserved exactly). Its centre moves at most maxLinearSpeed either way.
+TEST(World2D, spin_is_capped_at_a_quarter_turn_a_substep_unless_the_body_allows_fast_rotation) {
+  for (const bool fast : {false, true}) {
+    WorldDef def;
+    def.gravity = {0.0f, 0.0f};
+    World world(def);
+    BodyDef body;
+    body.type = BodyType::dynamicBody;
+    body.angularVelocity = 1000.0f;
+    body.linearVelocity = {1000.0f, 0.0f};
+    body.allowFastRotation = fast;
+    const BodyId id = world.createBody(body);
+    world.createShape(id, {}, Circle{{}, 0.5f});
+    world.step(1.0f / 60.0f);
+    const float cap = 0.25f * pi<float> * 240.0f;
+    EXPECT_NEAR(world.angularVelocity(id), fast ? 1000.0f : cap, fast ? 1e-3f : 1e-3f * cap) << fast;
+    EXPECT_NEAR(world.position(id).x, def.maxLinearSpeed / 60.0f, 1e-3f) << fast;
+  }
+}
+
 } // namespace
 } // namespace impetus::rigid2d

@@ -28,7 +28,10 @@ struct BodyDef {
   float angularDamping = 0.0f;  ///< 1/s
   float gravityScale = 1.0f;
   bool fixedRotation = false;
-  bool bullet = false;     ///< continuous collision against dynamic bodies too (time of impact)
+  bool bullet = false; ///< continuous collision against dynamic bodies too (time of impact)
+  /// Lets the body spin faster than a quarter turn a substep (a wheel, a rotor, a thrown bolo);
+  /// otherwise its spin is capped there, where the rotation deltas stop meaning what they say.
+  bool allowFastRotation = false;
   bool enableSleep = true; ///< may fall asleep when at rest
   bool isAwake = true;
   std::uint64_t userData = 0;
