@@ -2,8 +2,10 @@
 // Box2D v3): soft contacts with a stiffness in hertz, warm starting, a relax pass, restitution,
 // Coulomb friction and rolling resistance.
 //
-// Layout: the touching contacts are coloured each step so that no two contacts of a colour share
-// a moving body (static bodies do not count: nothing writes them). A colour's contacts are then
+// Layout: the constraint graph. The joints, then the touching contacts, are coloured each step so
+// that no two constraints of a colour share a moving body (static bodies do not count: nothing
+// writes them). A colour's joints are solved on several threads, then its contacts. A colour's
+// contacts are then
 // independent: they are solved several at a time in SIMD lanes (contact_wide_kernels.hpp: eight
 // with AVX2 where the CPU has it, four with SSE2) and their batches may run on several threads,
 // with results that depend on neither. Contacts that find no free colour (a body touching very
@@ -46,6 +48,8 @@ struct ContactSolverData {
   std::vector<ContactConstraint> overflow;
   std::vector<std::uint32_t> bodyColours; ///< per solver body: bit c set when colour c holds it
   std::array<std::vector<std::uint32_t>, colourCount> colourContacts;
+  std::array<std::vector<std::uint32_t>, colourCount> colourJoints; ///< joint slots, in slot order
+  std::vector<std::uint32_t> overflowJoints;
   Softness soft, staticSoft;
   float pushSpeed = 0.0f;
   float restitutionThreshold = 0.0f;
@@ -270,23 +274,66 @@ constexpr std::uint32_t prefetchDistance = 2;
   }
 }
 
-/// Runs `perColour(colour, begin, end)` over the batches of every colour, colour after colour
-/// (ranges of a colour in parallel), after the overflow contacts (`perOverflow`, in order).
-template <class PerRange, class PerOverflow>
-void forEachColour(WorldState& w, PerRange&& perRange, PerOverflow&& perOverflow) {
+/// The fewest joints of a colour worth a task of their own (a joint's solve is about a tenth of a
+/// microsecond).
+constexpr std::uint32_t minJointsPerTask = 64;
+
+/// Runs a stage over the constraint graph: the overflow joints and contacts first, in order
+/// (`jointOne(slot)`, `overflowOne(constraint)`), then colour after colour the colour's joints
+/// (`jointOne`, ranges in parallel) and its contact batches (`perRange(begin, end)`, ranges in
+/// parallel). A colour's constraints share no moving body, so the order within it cannot matter.
+template <class JointOne, class PerRange, class PerOverflow>
+void forEachColour(WorldState& w, JointOne&& jointOne, PerRange&& perRange, PerOverflow&& perOverflow) {
   ContactSolverData& d = *w.contactSolver;
+  for (const std::uint32_t slot : d.overflowJoints) {
+    jointOne(slot);
+  }
   for (ContactConstraint& c : d.overflow) {
     perOverflow(c);
   }
   for (std::size_t colour = 0; colour < colourCount; ++colour) {
+    const std::vector<std::uint32_t>& joints = d.colourJoints[colour];
+    w.parallelFor(static_cast<std::uint32_t>(joints.size()), minJointsPerTask,
+                  [&](std::uint32_t begin, std::uint32_t end) {
+                    for (std::uint32_t k = begin; k < end; ++k) {
+                      jointOne(joints[k]);
+                    }
+                  });
     const std::uint32_t first = d.colourStart[colour];
     const std::uint32_t count = d.colourStart[colour + 1] - first;
     w.parallelFor(count, 16, [&](std::uint32_t begin, std::uint32_t end) { perRange(first + begin, first + end); });
   }
 }
 
+/// Puts the joints prepared this step into the graph's colours, before the contacts (joints hold
+/// structures together: a colour of their own is worth more to them); a joint with no rows (a
+/// filter joint) takes none.
+void colourJoints(WorldState& w, ContactSolverData& d) {
+  const std::uint32_t staticIndex = w.staticIndex();
+  for (std::vector<std::uint32_t>& list : d.colourJoints) {
+    list.clear();
+  }
+  d.overflowJoints.clear();
+  for (std::uint32_t slot = 0; slot < w.joints.size(); ++slot) {
+    const Joint& joint = w.joints[slot];
+    if (!joint.solved || joint.type() == JointType::filter) {
+      continue;
+    }
+    const std::uint32_t ia = joint.frame.indexA;
+    const std::uint32_t ib = joint.frame.indexB;
+    const bool withStatic = ia == staticIndex || ib == staticIndex;
+    const int colour = findColour(d, ia, ib, staticIndex, withStatic ? allColours : dynamicColours);
+    if (colour < 0) {
+      d.overflowJoints.push_back(slot);
+    } else {
+      d.colourJoints[static_cast<std::size_t>(colour)].push_back(slot);
+    }
+  }
+}
+
 } // namespace
-void prepareContacts(WorldState& w, const StepContext& context) {
+
+void prepareConstraints(WorldState& w, const StepContext& context) {
   if (!w.contactSolver) {
     w.contactSolver = std::make_unique<ContactSolverData>();
     w.contactSolver->kernels = &selectWideKernels(w.def.simd);
@@ -300,9 +347,10 @@ void prepareContacts(WorldState& w, const StepContext& context) {
   d.pushSpeed = w.def.maxContactPushSpeed;
   d.restitutionThreshold = w.def.restitutionThreshold;
 
-  // Colour the touching contacts that involve a moving body, in pool order.
+  // Colour the joints, then the touching contacts that involve a moving body, in pool order.
   const std::uint32_t staticIndex = w.staticIndex();
   d.bodyColours.assign(staticIndex, 0);
+  colourJoints(w, d);
   for (std::vector<std::uint32_t>& list : d.colourContacts) {
     list.clear();
   }
@@ -356,12 +404,12 @@ void prepareContacts(WorldState& w, const StepContext& context) {
   }
 }
 
-void warmStartContacts(WorldState& w) {
+void warmStartConstraints(WorldState& w) {
   const std::uint32_t staticIndex = w.staticIndex();
   ContactSolverData& d = *w.contactSolver;
   BodyState* states = w.states.data();
   forEachColour(
-      w,
+      w, [&](std::uint32_t slot) { warmStartJoint(w, slot); },
       [&](std::uint32_t begin, std::uint32_t end) {
         d.kernels->warmStart(d.batches(), begin, end, states, staticIndex);
       },
@@ -385,13 +433,13 @@ void warmStartContacts(WorldState& w) {
       });
 }
 
-void solveContacts(WorldState& w, const StepContext& context, bool useBias) {
+void solveConstraints(WorldState& w, const StepContext& context, bool useBias) {
   const std::uint32_t staticIndex = w.staticIndex();
   ContactSolverData& d = *w.contactSolver;
   BodyState* states = w.states.data();
   const ContactSolveParams params{context.inverseH, d.pushSpeed, useBias};
   forEachColour(
-      w,
+      w, [&](std::uint32_t slot) { solveJoint(w, slot, context, useBias); },
       [&](std::uint32_t begin, std::uint32_t end) {
         d.kernels->solve(d.batches(), begin, end, states, staticIndex, params);
       },
@@ -404,7 +452,7 @@ void applyRestitution(WorldState& w) {
   BodyState* states = w.states.data();
   const float threshold = d.restitutionThreshold;
   forEachColour(
-      w,
+      w, [](std::uint32_t) {}, // joints have no restitution
       [&](std::uint32_t begin, std::uint32_t end) {
         d.kernels->restitution(d.batches(), begin, end, states, staticIndex, threshold);
       },
@@ -435,6 +483,22 @@ void storeImpulses(WorldState& w) {
                        hitThreshold);
     }
   });
+}
+
+ConstraintGraphCounts constraintGraph(const WorldState& w) {
+  static_assert(ConstraintGraphCounts::colours == colourCount);
+  ConstraintGraphCounts counts;
+  if (!w.contactSolver) {
+    return counts;
+  }
+  const ContactSolverData& d = *w.contactSolver;
+  for (std::size_t c = 0; c < colourCount; ++c) {
+    counts.colourJoints[c] = static_cast<std::uint32_t>(d.colourJoints[c].size());
+    counts.colourContacts[c] = static_cast<std::uint32_t>(d.colourContacts[c].size());
+  }
+  counts.overflowJoints = static_cast<std::uint32_t>(d.overflowJoints.size());
+  counts.overflowContacts = static_cast<std::uint32_t>(d.overflow.size());
+  return counts;
 }
 
 int contactLanes(const WorldState& w) { return selectWideKernels(w.def.simd).width; }

@@ -62,21 +62,29 @@ void prepareJoints(WorldState& w, const StepContext& context) {
   }
 }
 
+void warmStartJoint(WorldState& w, std::uint32_t slot) {
+  Joint& joint = w.joints[slot];
+  std::visit([&](auto& data) { warmStartJoint(data, joint.frame, w.states, w.staticIndex()); }, joint.data);
+}
+
+void solveJoint(WorldState& w, std::uint32_t slot, const StepContext& context, bool useBias) {
+  Joint& joint = w.joints[slot];
+  std::visit([&](auto& data) { solveJoint(data, joint.frame, w.states, w.staticIndex(), context, useBias); },
+             joint.data);
+}
+
 void warmStartJoints(WorldState& w) {
-  const std::uint32_t staticIndex = w.staticIndex();
-  for (Joint& joint : w.joints) {
-    if (joint.solved) {
-      std::visit([&](auto& data) { warmStartJoint(data, joint.frame, w.states, staticIndex); }, joint.data);
+  for (std::uint32_t slot = 0; slot < w.joints.size(); ++slot) {
+    if (w.joints[slot].solved) {
+      warmStartJoint(w, slot);
     }
   }
 }
 
 void solveJoints(WorldState& w, const StepContext& context, bool useBias) {
-  const std::uint32_t staticIndex = w.staticIndex();
-  for (Joint& joint : w.joints) {
-    if (joint.solved) {
-      std::visit([&](auto& data) { solveJoint(data, joint.frame, w.states, staticIndex, context, useBias); },
-                 joint.data);
+  for (std::uint32_t slot = 0; slot < w.joints.size(); ++slot) {
+    if (w.joints[slot].solved) {
+      solveJoint(w, slot, context, useBias);
     }
   }
 }

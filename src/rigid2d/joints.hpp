@@ -39,9 +39,13 @@ struct Joint {
   [[nodiscard]] JointType type() const noexcept { return static_cast<JointType>(data.index()); }
 };
 
-// joint.cpp: the joints' part of the step, in joint slot order.
+// joint.cpp: the joints' part of the step. The soft step solves them in the constraint graph's
+// colours with the contacts (contact_solver.cpp); the book's solver, in joint slot order.
 void prepareJoints(WorldState& w, const StepContext& context);
-/// Every joint's warm start: its parts' accumulated impulses applied again, after the contacts'.
+/// One joint's warm start: its parts' accumulated impulses applied again.
+void warmStartJoint(WorldState& w, std::uint32_t slot);
+void solveJoint(WorldState& w, std::uint32_t slot, const StepContext& context, bool useBias);
+/// Every joint's warm start and solve, in joint slot order (the book's solver).
 void warmStartJoints(WorldState& w);
 void solveJoints(WorldState& w, const StepContext& context, bool useBias);
 /// Reaction readouts and break events, after the substeps.

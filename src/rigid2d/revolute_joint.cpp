@@ -48,7 +48,9 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
     const RevoluteJointDef& def = joint.def;
     const JointRow angle = angleRow();
-    joint.spring.solve(angle, frame, a, b, jointAngle(joint, a, b), useBias);
+    if (def.enableSpring) {
+      joint.spring.solve(angle, frame, a, b, jointAngle(joint, a, b), useBias);
+    }
     if (def.enableMotor) {
       joint.motor.solve(angle, frame, a, b, def.motorSpeed, context.h * def.maxMotorTorque);
     }

@@ -121,16 +121,13 @@ void solve(WorldState& w, float dt) {
   const StepContext context = makeStepContext(w, dt, w.def.substeps);
   buildSolverBodies(w);
   prepareJoints(w, context);
-  prepareContacts(w, context);
+  prepareConstraints(w, context);
   for (int substep = 0; substep < context.substeps; ++substep) {
     integrateVelocities(w, context);
-    warmStartContacts(w);
-    warmStartJoints(w);
-    solveJoints(w, context, true);
-    solveContacts(w, context, true);
+    warmStartConstraints(w);
+    solveConstraints(w, context, true);
     integratePositions(w, context);
-    solveJoints(w, context, false); // relax
-    solveContacts(w, context, false);
+    solveConstraints(w, context, false); // relax
   }
   applyRestitution(w);
   storeImpulses(w);

@@ -343,6 +343,7 @@ World& World::operator=(World&&) noexcept = default;
 
 int World::contactLanes() const noexcept { return detail::contactLanes(*impl_); }
 const char* World::contactSimd() const noexcept { return detail::contactSimd(*impl_); }
+ConstraintGraphCounts World::constraintGraph() const noexcept { return detail::constraintGraph(*impl_); }
 
 std::size_t World::contactCount() const noexcept {
   return static_cast<std::size_t>(std::count_if(impl_->contacts.begin(), impl_->contacts.end(), [](const Contact& c) {

@@ -393,11 +393,13 @@ void integratePositions(WorldState& w, const StepContext& context);
 /// one impulse per touching contact.
 void solveBookImpulse(WorldState& w, float dt);
 
-// contact_solver.cpp: the contact constraints, coloured so that each colour's constraints share
-// no moving body and are solved several at a time in SIMD lanes (and on several threads).
-void prepareContacts(WorldState& w, const StepContext& context);
-void warmStartContacts(WorldState& w);
-void solveContacts(WorldState& w, const StepContext& context, bool useBias);
+// contact_solver.cpp: the constraint graph, contacts and joints coloured so that each colour's
+// constraints share no moving body; a colour's contacts are solved several at a time in SIMD
+// lanes, and its joints and contact batches on several threads. prepareConstraints colours the
+// joints prepared by prepareJoints with the contacts and prepares the contacts.
+void prepareConstraints(WorldState& w, const StepContext& context);
+void warmStartConstraints(WorldState& w);
+void solveConstraints(WorldState& w, const StepContext& context, bool useBias);
 void applyRestitution(WorldState& w);
 /// Throws impetus::Error naming the first invalid field of the world's settings
 /// (world_settings.cpp).
@@ -409,6 +411,7 @@ void storeImpulses(WorldState& w);
 /// The lane width and instruction set the world's def.simd selects on this CPU.
 [[nodiscard]] int contactLanes(const WorldState& w);
 [[nodiscard]] const char* contactSimd(const WorldState& w);
+[[nodiscard]] ConstraintGraphCounts constraintGraph(const WorldState& w);
 
 // island.cpp
 /// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).

@@ -5,6 +5,7 @@
 #include <impetus/core/task_runner.hpp>
 #include <impetus/math/vec2.hpp>
 
+#include <array>
 #include <cstdint>
 
 namespace impetus::rigid2d {
@@ -87,6 +88,17 @@ enum class SimdLevel {
   widest,
   /// The baseline of the build: SSE2 on x86-64 (four at once), plain floats elsewhere.
   baseline,
+};
+
+/// How the last soft step laid out its constraints in the constraint graph: per colour, the joints
+/// and contacts that share no moving body (solved together, on threads), and the overflow solved
+/// one by one first (a body in more constraints than there are colours). As Box2D v3's counters.
+struct ConstraintGraphCounts {
+  static constexpr int colours = 24;
+  std::array<std::uint32_t, colours> colourJoints{};
+  std::array<std::uint32_t, colours> colourContacts{};
+  std::uint32_t overflowJoints = 0;
+  std::uint32_t overflowContacts = 0;
 };
 
 struct WorldDef {
