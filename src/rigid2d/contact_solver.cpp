@@ -50,6 +50,9 @@ struct ContactSolverData {
   std::array<std::vector<std::uint32_t>, colourCount> colourContacts;
   std::array<std::vector<std::uint32_t>, colourCount> colourJoints; ///< joint slots, in slot order
   std::vector<std::uint32_t> overflowJoints;
+  /// The joints solved this step: the overflow's, then colour by colour (jointColourStart).
+  std::vector<JointSim> jointSims;
+  std::array<std::uint32_t, colourCount + 1> jointColourStart{};
   Softness soft, staticSoft;
   float pushSpeed = 0.0f;
   float restitutionThreshold = 0.0f;
@@ -285,18 +288,18 @@ constexpr std::uint32_t minJointsPerTask = 64;
 template <class JointOne, class PerRange, class PerOverflow>
 void forEachColour(WorldState& w, JointOne&& jointOne, PerRange&& perRange, PerOverflow&& perOverflow) {
   ContactSolverData& d = *w.contactSolver;
-  for (const std::uint32_t slot : d.overflowJoints) {
-    jointOne(slot);
+  for (std::uint32_t k = 0; k < d.jointColourStart[0]; ++k) {
+    jointOne(d.jointSims[k]);
   }
   for (ContactConstraint& c : d.overflow) {
     perOverflow(c);
   }
   for (std::size_t colour = 0; colour < colourCount; ++colour) {
-    const std::vector<std::uint32_t>& joints = d.colourJoints[colour];
-    w.parallelFor(static_cast<std::uint32_t>(joints.size()), minJointsPerTask,
+    const std::uint32_t firstJoint = d.jointColourStart[colour];
+    w.parallelFor(d.jointColourStart[colour + 1] - firstJoint, minJointsPerTask,
                   [&](std::uint32_t begin, std::uint32_t end) {
-                    for (std::uint32_t k = begin; k < end; ++k) {
-                      jointOne(joints[k]);
+                    for (std::uint32_t k = firstJoint + begin; k < firstJoint + end; ++k) {
+                      jointOne(d.jointSims[k]);
                     }
                   });
     const std::uint32_t first = d.colourStart[colour];
@@ -329,6 +332,32 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
       d.colourJoints[static_cast<std::size_t>(colour)].push_back(slot);
     }
   }
+  // The solver's copies, in solve order.
+  std::size_t count = d.overflowJoints.size();
+  for (const std::vector<std::uint32_t>& list : d.colourJoints) {
+    count += list.size();
+  }
+  d.jointSims.resize(count);
+  std::uint32_t at = 0;
+  const auto copy = [&](const std::vector<std::uint32_t>& list) {
+    w.parallelFor(static_cast<std::uint32_t>(list.size()), minJointsPerTask,
+                  [&](std::uint32_t begin, std::uint32_t end) {
+                    for (std::uint32_t k = begin; k < end; ++k) {
+                      const Joint& joint = w.joints[list[k]];
+                      JointSim& sim = d.jointSims[at + k];
+                      sim.data = joint.data;
+                      sim.frame = joint.frame;
+                      sim.slot = list[k];
+                    }
+                  });
+    at += static_cast<std::uint32_t>(list.size());
+  };
+  copy(d.overflowJoints);
+  for (std::size_t c = 0; c < colourCount; ++c) {
+    d.jointColourStart[c] = at;
+    copy(d.colourJoints[c]);
+  }
+  d.jointColourStart[colourCount] = at;
 }
 
 } // namespace
@@ -409,7 +438,7 @@ void warmStartConstraints(WorldState& w) {
   ContactSolverData& d = *w.contactSolver;
   BodyState* states = w.states.data();
   forEachColour(
-      w, [&](std::uint32_t slot) { warmStartJoint(w, slot); },
+      w, [&](JointSim& joint) { warmStartJoint(joint, w.states, staticIndex); },
       [&](std::uint32_t begin, std::uint32_t end) {
         d.kernels->warmStart(d.batches(), begin, end, states, staticIndex);
       },
@@ -439,7 +468,7 @@ void solveConstraints(WorldState& w, const StepContext& context, bool useBias) {
   BodyState* states = w.states.data();
   const ContactSolveParams params{context.inverseH, d.pushSpeed, useBias};
   forEachColour(
-      w, [&](std::uint32_t slot) { solveJoint(w, slot, context, useBias); },
+      w, [&](JointSim& joint) { solveJoint(joint, w.states, staticIndex, context, useBias); },
       [&](std::uint32_t begin, std::uint32_t end) {
         d.kernels->solve(d.batches(), begin, end, states, staticIndex, params);
       },
@@ -452,7 +481,7 @@ void applyRestitution(WorldState& w) {
   BodyState* states = w.states.data();
   const float threshold = d.restitutionThreshold;
   forEachColour(
-      w, [](std::uint32_t) {}, // joints have no restitution
+      w, [](JointSim&) {}, // joints have no restitution
       [&](std::uint32_t begin, std::uint32_t end) {
         d.kernels->restitution(d.batches(), begin, end, states, staticIndex, threshold);
       },
@@ -461,6 +490,14 @@ void applyRestitution(WorldState& w) {
 
 void storeImpulses(WorldState& w) {
   ContactSolverData& d = *w.contactSolver;
+  // The joints' parts, impulses and all, back to their slots (what the reactions and the next
+  // step's warm start read).
+  w.parallelFor(static_cast<std::uint32_t>(d.jointSims.size()), minJointsPerTask,
+                [&](std::uint32_t begin, std::uint32_t end) {
+                  for (std::uint32_t k = begin; k < end; ++k) {
+                    w.joints[d.jointSims[k].slot].data = d.jointSims[k].data;
+                  }
+                });
   const float hitThreshold = w.def.hitEventThreshold;
   for (const ContactConstraint& c : d.overflow) {
     Contact& contact = w.contacts[c.contact];

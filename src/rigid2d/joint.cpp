@@ -62,6 +62,15 @@ void prepareJoints(WorldState& w, const StepContext& context) {
   }
 }
 
+void warmStartJoint(JointSim& joint, std::vector<BodyState>& states, std::uint32_t staticIndex) {
+  std::visit([&](auto& data) { warmStartJoint(data, joint.frame, states, staticIndex); }, joint.data);
+}
+
+void solveJoint(JointSim& joint, std::vector<BodyState>& states, std::uint32_t staticIndex, const StepContext& context,
+                bool useBias) {
+  std::visit([&](auto& data) { solveJoint(data, joint.frame, states, staticIndex, context, useBias); }, joint.data);
+}
+
 void warmStartJoint(WorldState& w, std::uint32_t slot) {
   Joint& joint = w.joints[slot];
   std::visit([&](auto& data) { warmStartJoint(data, joint.frame, w.states, w.staticIndex()); }, joint.data);
