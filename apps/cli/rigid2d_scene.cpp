@@ -85,6 +85,7 @@ WorldDef Loader::worldDef(const json& j) {
   d.contactHertz = f.nonNegative("contact_hertz", d.contactHertz);
   d.contactDampingRatio = f.nonNegative("contact_damping_ratio", d.contactDampingRatio);
   d.maxContactPushSpeed = f.positive("max_contact_push_speed", d.maxContactPushSpeed);
+  d.maxJointPushSpeed = f.positive("max_joint_push_speed", d.maxJointPushSpeed);
   d.jointHertz = f.nonNegative("joint_hertz", d.jointHertz);
   d.enableWarmStarting = f.boolean("enable_warm_starting", d.enableWarmStarting);
   d.jointDampingRatio = f.nonNegative("joint_damping_ratio", d.jointDampingRatio);

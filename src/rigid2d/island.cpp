@@ -57,7 +57,8 @@ void updateSleep(WorldState& w, float dt) {
       continue;
     }
     const bool slow = lengthSquared(b.linearVelocity) <= d.sleepLinearTolerance * d.sleepLinearTolerance &&
-                      std::abs(b.angularVelocity) <= d.sleepAngularTolerance;
+                      std::abs(b.angularVelocity) <= d.sleepAngularTolerance && b.stepSpeed <= d.sleepLinearTolerance &&
+                      b.stepSpin <= d.sleepAngularTolerance;
     b.sleepTime = (b.enableSleep && slow) ? b.sleepTime + dt : 0.0f;
   }
   std::vector<std::uint32_t>& parent = w.islandParent;

@@ -46,6 +46,7 @@ void prepareJoints(WorldState& w, const StepContext& context) {
     if (joint.constraintHertz > 0.0f) {
       // The joint's own stiffness, capped as the world's (jointSoftnessFor).
       f.softness = jointSoftnessFor(joint.constraintHertz, joint.constraintDampingRatio, context);
+      f.softness.maxBias = context.jointSoftness.maxBias;
     }
     if (!context.warmStarting) {
       // Every part starts the step without an impulse: a fresh joint with the same settings.

@@ -113,6 +113,7 @@ StepContext makeStepContext(const WorldState& w, float dt, int substeps) {
   context.maxAngularSpeed = maxRotationPerSubstep * context.inverseH;
   // Joints are held at the world's stiffness unless they have their own (joint.cpp).
   context.jointSoftness = jointSoftnessFor(w.def.jointHertz, w.def.jointDampingRatio, context);
+  context.jointSoftness.maxBias = w.def.maxJointPushSpeed;
   context.warmStarting = w.def.enableWarmStarting;
   return context;
 }

@@ -426,6 +426,8 @@ void World::step(float dt) {
       b.center = detail::sweepAgainstStatic(w, b, start, b.center);
     }
     const Rot2f q = normalize(mul(s.dq, b.transform.q));
+    b.stepSpeed = length(b.center - start) / dt;
+    b.stepSpin = std::abs(std::atan2(s.dq.s, s.dq.c)) / dt;
     b.transform = {b.center - rotate(q, b.localCenter), q};
     b.force = {};
     b.torque = 0.0f;

@@ -76,7 +76,12 @@ struct Body {
   bool allowFastRotation = false; ///< BodyDef::allowFastRotation
   bool enableSleep = true;
   bool awake = true;
-  float sleepTime = 0.0f;            ///< s spent slower than the sleep tolerances
+  float sleepTime = 0.0f; ///< s spent slower than the sleep tolerances
+  /// How fast the last step moved and turned the body (its displacement and turn over dt, m/s
+  /// and rad/s): at rest means not moving, whatever the end velocity says (a joint being mended
+  /// moves its bodies by bias velocity that the relax pass then takes back).
+  float stepSpeed = 0.0f;
+  float stepSpin = 0.0f;
   float coreRadius = 0.0f;           ///< continuous collision's swept circle, m (computeCoreRadius)
   std::uint32_t solverIndex = 0;     ///< this step's index into the solver arrays (moving bodies)
   std::vector<std::uint32_t> shapes; ///< shape slots

@@ -18,6 +18,7 @@ void validateWorldDef(const WorldDef& def) {
   requireNonNegative(def.contactHertz, "contactHertz");
   requireNonNegative(def.contactDampingRatio, "contactDampingRatio");
   requirePositive(def.maxContactPushSpeed, "maxContactPushSpeed");
+  requirePositive(def.maxJointPushSpeed, "maxJointPushSpeed");
   requireNonNegative(def.restitutionThreshold, "restitutionThreshold");
   requirePositive(def.maxLinearSpeed, "maxLinearSpeed");
   requireNonNegative(def.jointHertz, "jointHertz");

@@ -29,6 +29,11 @@ namespace impetus::solver {
 /// The softness of a rigid row: no bias, full mass (the relax pass solves rigid rows with it).
 inline constexpr Softness rigidRow{};
 
+/// A row's bias speed for the error c (m or rad) at `soft`, within its maxBias.
+[[nodiscard]] inline float biasSpeed(const Softness& soft, float c) {
+  return std::clamp(soft.biasRate * c, -soft.maxBias, soft.maxBias);
+}
+
 /// An equality row C = 0.
 struct RowPart {
   float impulse = 0.0f;
@@ -42,7 +47,7 @@ struct RowPart {
     const float old = impulse;
     const float bound = maxRowImpulse(row, mass, m);
     impulse =
-        std::clamp(old - soft.massScale * mass * (rowSpeed(row, a, b) + soft.biasRate * c) - soft.impulseScale * old,
+        std::clamp(old - soft.massScale * mass * (rowSpeed(row, a, b) + biasSpeed(soft, c)) - soft.impulseScale * old,
                    -bound, bound);
     applyRow(row, m, a, b, impulse - old);
   }
@@ -177,7 +182,7 @@ private:
     } else if (useBias) {
       s = soft;
     }
-    const float lambda = -mass * s.massScale * (cdot + s.biasRate * c) - s.impulseScale * accumulated;
+    const float lambda = -mass * s.massScale * (cdot + biasSpeed(s, c)) - s.impulseScale * accumulated;
     const float total = std::clamp(accumulated + lambda, 0.0f, bound);
     const float applied = total - accumulated;
     accumulated = total;
@@ -251,7 +256,7 @@ template <int N> struct BlockPart {
       for (int j = 0; j < N; ++j) {
         k[i][j] = rowCouplingPrecise(rows[i], rows[j], m);
       }
-      r[i] = rowSpeed(rows[i], a, b) + soft.biasRate * c[i];
+      r[i] = rowSpeed(rows[i], a, b) + biasSpeed(soft, c[i]);
     }
     const std::array<double, N> x = solveSymmetric<N>(k, r);
     std::array<float, N> lambda{};

@@ -5,6 +5,8 @@
 
 #include <impetus/math/scalar.hpp>
 
+#include <limits>
+
 namespace impetus::solver {
 
 /// Soft constraint coefficients for a spring of `hertz` and damping ratio `zeta` over a
@@ -15,6 +17,9 @@ struct Softness {
   float biasRate = 0.0f;
   float massScale = 1.0f;
   float impulseScale = 0.0f;
+  /// The largest bias speed, in the row's units per second (m/s, or rad/s for an angle row):
+  /// how fast an error may be taken back (a joint's maxJointPushSpeed). No bound by default.
+  float maxBias = std::numeric_limits<float>::infinity();
 };
 
 [[nodiscard]] inline Softness makeSoft(float hertz, float zeta, float h) {
@@ -25,7 +30,7 @@ struct Softness {
   const float a1 = 2.0f * zeta + h * omega;
   const float a2 = h * omega * a1;
   const float a3 = 1.0f / (1.0f + a2);
-  return {omega / a1, a2 * a3, a3};
+  return {omega / a1, a2 * a3, a3, std::numeric_limits<float>::infinity()};
 }
 
 } // namespace impetus::solver

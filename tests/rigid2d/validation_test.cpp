@@ -107,6 +107,8 @@ TEST(Rigid2dValidation, world_def_and_step) {
       {"contactDampingRatio", "-1", def([](WorldDef& d) { d.contactDampingRatio = -1.0f; })},
       {"maxContactPushSpeed", "0", def([](WorldDef& d) { d.maxContactPushSpeed = 0.0f; })},
       {"maxContactPushSpeed", "inf", def([](WorldDef& d) { d.maxContactPushSpeed = inff; })},
+      {"maxJointPushSpeed", "0", def([](WorldDef& d) { d.maxJointPushSpeed = 0.0f; })},
+      {"maxJointPushSpeed", "nan", def([](WorldDef& d) { d.maxJointPushSpeed = std::nanf(""); })},
       {"jointHertz", "inf", def([](WorldDef& d) { d.jointHertz = inff; })},
       {"jointDampingRatio", "-1", def([](WorldDef& d) { d.jointDampingRatio = -1.0f; })},
       {"restitutionThreshold", "-1", def([](WorldDef& d) { d.restitutionThreshold = -1.0f; })},

@@ -112,6 +112,11 @@ struct WorldDef {
   /// apart is brought back together, and its damping ratio.
   float jointHertz = 60.0f;
   float jointDampingRatio = 2.0f;
+  /// The fastest a joint's error is taken back (m/s along a direction, rad/s about an angle row:
+  /// a metre's lever), as maxContactPushSpeed is for overlap: a joint torn metres apart (an
+  /// impact at 100 m/s) is mended over several steps instead of in one violent push, whose
+  /// velocity the relax pass cannot wholly take back when the bodies turn fast.
+  float maxJointPushSpeed = 10.0f;
   float restitutionThreshold = 1.0f; ///< m/s: slower impacts do not bounce
   /// Start each step's contacts and joints from the impulses they ended the last with (what
   /// lets stacks and chains converge in a few iterations). Off: from zero (for study and tests).
