@@ -33,6 +33,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -47,6 +49,8 @@ namespace {
 using impetus::Transform2f;
 namespace bench = impetus::bench;
 
+using impetus::rigid2d::StepProfile;
+
 /// What one engine did with one scene.
 struct EngineResult {
   double msPerStep = 0.0;
@@ -56,7 +60,38 @@ struct EngineResult {
   float largestJointGap = 0.0f; ///< m, the widest gap between a joint's anchors (scenes with joints)
   std::size_t touchingContacts = 0;
   bool finite = true;
+  StepProfile profile; ///< Impetus only: the mean of World::profile() over the steps, ms
 };
+
+/// The profile's parts by name, in step order (World::profile()).
+std::vector<std::pair<const char*, float>> profileParts(const StepProfile& p) {
+  return {{"pairs", p.pairs},
+          {"collide", p.collide},
+          {"prepare", p.prepare},
+          {"integrate_velocities", p.integrateVelocities},
+          {"warm_start", p.warmStart},
+          {"solve", p.solveConstraints},
+          {"integrate_positions", p.integratePositions},
+          {"relax", p.relax},
+          {"restitution", p.restitution},
+          {"store_impulses", p.storeImpulses},
+          {"finalize", p.finalize}};
+}
+
+/// Every part of a StepProfile, for sums and means.
+constexpr std::array<float StepProfile::*, 13> profileMembers = {&StepProfile::step,
+                                                                 &StepProfile::pairs,
+                                                                 &StepProfile::collide,
+                                                                 &StepProfile::solve,
+                                                                 &StepProfile::prepare,
+                                                                 &StepProfile::integrateVelocities,
+                                                                 &StepProfile::warmStart,
+                                                                 &StepProfile::solveConstraints,
+                                                                 &StepProfile::integratePositions,
+                                                                 &StepProfile::relax,
+                                                                 &StepProfile::restitution,
+                                                                 &StepProfile::storeImpulses,
+                                                                 &StepProfile::finalize};
 
 template <typename StepLoop> double timeMs(StepLoop&& loop) {
   const auto start = std::chrono::steady_clock::now();
@@ -103,11 +138,17 @@ EngineResult runImpetus(const bench::Rigid2dScene& scene, int steps, int threads
   const double ms = timeMs([&] {
     for (int i = 0; i < steps; ++i) {
       built.world.step(bench::sceneTimeStep);
+      for (float StepProfile::*part : profileMembers) {
+        r.profile.*part += built.world.profile().*part;
+      }
       for (std::size_t k = 0; k < tops.size(); ++k) {
         watch.observe(k, built.world.position(tops[k]).y);
       }
     }
   });
+  for (float StepProfile::*part : profileMembers) {
+    r.profile.*part /= static_cast<float>(steps);
+  }
   r.topMaxSink = watch.maxSink;
   r.msPerStep = ms / steps;
   r.touchingContacts = built.world.contactCount();
@@ -361,6 +402,11 @@ int main(int argc, char** argv) {
         j["impetus_simd"] = probe.contactSimd();
         j["impetus_contact_lanes"] = probe.contactLanes();
         addQuality(j, "impetus_", scene, *ri);
+        nlohmann::json profile;
+        for (const auto& [part, ms] : profileParts(ri->profile)) {
+          profile[part] = ms;
+        }
+        j["impetus_profile_ms"] = std::move(profile);
       }
       nlohmann::json peers = nlohmann::json::array();
       const auto addPeer = [&](const std::string& peerName, const std::optional<EngineResult>& r,
@@ -397,6 +443,13 @@ int main(int argc, char** argv) {
         std::printf(" | %s | %6s", cells(scene, rb3).c_str(), ratioCell(rb3).c_str());
       }
       std::printf("\n");
+      if (ri) {
+        std::printf("%-14s Impetus ms/step by stage:", "");
+        for (const auto& [part, ms] : profileParts(ri->profile)) {
+          std::printf(" %s %.3f", part, static_cast<double>(ms));
+        }
+        std::printf("\n");
+      }
       if (!scene.joints.empty()) {
         std::printf("%-14s %7zu joints; widest joint gap at the end: Impetus %s m, Box2D 2.4.1 %s m", "",
                     scene.joints.size(), ri ? fixed(ri->largestJointGap, 4).c_str() : "-",

@@ -8,6 +8,7 @@
 // applied once at the end, and the impulses are stored for the next step.
 #include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
+#include "solver/stage_clock.hpp"
 
 #include <impetus/math/scalar.hpp>
 
@@ -118,21 +119,64 @@ StepContext makeStepContext(const WorldState& w, float dt, int substeps) {
   return context;
 }
 
+namespace {
+
+/// The soft step's stages, in the order they run: reading the list is reading the algorithm
+/// (Box2D v3's solver stages are the model). Each stage runs its blocks of work on the task
+/// runner (parallelFor); the stages of the substep loop run once a substep.
+struct StageStep {
+  const char* name;
+  void (*run)(WorldState& w, const StepContext& context);
+  float StepProfile::*time; ///< where the profile adds its wall time
+};
+
+constexpr StageStep beforeSubsteps[] = {
+    {"prepare",
+     [](WorldState& w, const StepContext& c) {
+       buildSolverBodies(w);
+       prepareJoints(w, c);
+       prepareConstraints(w, c); // colours the joints with the contacts and prepares the contacts
+     },
+     &StepProfile::prepare},
+};
+
+constexpr StageStep eachSubstep[] = {
+    {"integrate velocities", integrateVelocities, &StepProfile::integrateVelocities},
+    {"warm start", [](WorldState& w, const StepContext&) { warmStartConstraints(w); }, &StepProfile::warmStart},
+    {"solve", [](WorldState& w, const StepContext& c) { solveConstraints(w, c, true); },
+     &StepProfile::solveConstraints},
+    {"integrate positions", integratePositions, &StepProfile::integratePositions},
+    {"relax", [](WorldState& w, const StepContext& c) { solveConstraints(w, c, false); }, &StepProfile::relax},
+};
+
+constexpr StageStep afterSubsteps[] = {
+    {"restitution", [](WorldState& w, const StepContext&) { applyRestitution(w); }, &StepProfile::restitution},
+    {"store impulses",
+     [](WorldState& w, const StepContext& c) {
+       storeImpulses(w);
+       finishJoints(w, c);
+     },
+     &StepProfile::storeImpulses},
+};
+
+template <std::size_t N>
+void runStages(const StageStep (&stages)[N], WorldState& w, const StepContext& context, solver::StageClock& clock) {
+  for (const StageStep& s : stages) {
+    s.run(w, context);
+    w.profile.*s.time += clock.lap();
+  }
+}
+
+} // namespace
+
 void solve(WorldState& w, float dt) {
   const StepContext context = makeStepContext(w, dt, w.def.substeps);
-  buildSolverBodies(w);
-  prepareJoints(w, context);
-  prepareConstraints(w, context);
+  solver::StageClock clock;
+  runStages(beforeSubsteps, w, context, clock);
   for (int substep = 0; substep < context.substeps; ++substep) {
-    integrateVelocities(w, context);
-    warmStartConstraints(w);
-    solveConstraints(w, context, true);
-    integratePositions(w, context);
-    solveConstraints(w, context, false); // relax
+    runStages(eachSubstep, w, context, clock);
   }
-  applyRestitution(w);
-  storeImpulses(w);
-  finishJoints(w, context);
+  runStages(afterSubsteps, w, context, clock);
 }
 
 } // namespace impetus::rigid2d::detail

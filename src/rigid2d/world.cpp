@@ -1,6 +1,7 @@
 // The 2D world: its settings, the broadphase, the narrowphase (contacts and their events) and
 // the step's order. Bodies and shapes are created, read and pushed in world_bodies.cpp.
 #include "rigid2d/world_impl.hpp"
+#include "solver/stage_clock.hpp"
 
 #include <impetus/error.hpp>
 #include <impetus/math/validate.hpp>
@@ -343,6 +344,7 @@ World& World::operator=(World&&) noexcept = default;
 
 int World::contactLanes() const noexcept { return detail::contactLanes(*impl_); }
 const char* World::contactSimd() const noexcept { return detail::contactSimd(*impl_); }
+const StepProfile& World::profile() const noexcept { return impl_->profile; }
 ConstraintGraphCounts World::constraintGraph() const noexcept { return detail::constraintGraph(*impl_); }
 
 std::size_t World::contactCount() const noexcept {
@@ -390,14 +392,20 @@ void World::step(float dt) {
   take(w.sensorEvents.begins, w.pendingSensorEvents.begins);
   take(w.sensorEvents.ends, w.pendingSensorEvents.ends);
   w.jointEvents.breaks.clear();
+  solver::StageClock clock;
+  StepProfile& profile = w.profile;
+  profile = {};
   updatePairs(w);
+  profile.pairs = clock.lap();
   detail::wakeTouched(w, collideContacts(w));
   w.maybeHit.assign(w.contacts.size(), 0);
+  profile.collide = clock.lap();
   if (w.def.solver == SolverKind::bookImpulse) {
     detail::solveBookImpulse(w, dt);
   } else {
     detail::solve(w, dt);
   }
+  profile.solve = clock.lap();
   for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
     if (w.maybeHit[slot] == 0) {
       continue;
@@ -451,6 +459,8 @@ void World::step(float dt) {
     const Body& b = w.bodies[slot];
     w.bodyMoveEvents.push_back({b.id, b.transform, !b.awake, b.userData});
   }
+  profile.finalize = clock.lap();
+  profile.step = clock.total();
 }
 
 const ContactEvents& World::contactEvents() const noexcept { return impl_->contactEvents; }

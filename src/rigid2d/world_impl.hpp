@@ -259,6 +259,7 @@ struct WorldState {
   IdPool jointIds;
   std::vector<Joint> joints; ///< by id slot
   JointEvents jointEvents;
+  StepProfile profile;                    ///< the last step's (World::profile)
   float lastInverseH = 0.0f;              ///< the last step's substep rate, 1/s (impulses to forces)
   std::vector<std::uint8_t> touchChanges; ///< scratch of the collide pass (TouchChange)
   /// Scratch of the solve, per contact slot: 1 where the contact approached fast enough this

@@ -176,7 +176,7 @@ TEST(WorldSettings, gravity_changes_at_run_time_and_bad_values_leave_the_world_a
 
 // A joint torn 2 m apart is mended at most at maxJointPushSpeed (as overlap is at
 // maxContactPushSpeed): a fixed-rotation box pinned to the world 2 m from where the pin wants it,
-// no gravity, closes the gap at no more than that speed (10 m/s by default, 4 m/s here) in a
+// no gravity, closes the gap at no more than that speed (4 and 10 m/s here; 100 by default) in a
 // straight line, and comes to rest at the pin (the relax pass takes the push back each substep,
 // so it never overshoots). It moves while it mends, so it does not fall asleep half-way (at rest
 // means not moving: the step's displacement counts, not only the end velocity).

@@ -296,6 +296,8 @@ public:
   /// the instruction set ("avx2", "sse2" or "scalar"): what WorldDef::simd chose on this CPU.
   [[nodiscard]] int contactLanes() const noexcept;
   [[nodiscard]] const char* contactSimd() const noexcept;
+  /// Where the last step's time went (StepProfile).
+  [[nodiscard]] const StepProfile& profile() const noexcept;
   /// The constraint graph of the last step (all zero before the first soft step).
   [[nodiscard]] ConstraintGraphCounts constraintGraph() const noexcept;
 
