@@ -393,19 +393,12 @@ void meddle(Episode& e, Random& rng) {
 bool finite(const Vec2f& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
 /// Whether a kinematic body drives the body: a chain of joints and touching contacts through
-/// dynamic bodies links the two. A kinematic body goes where it is sent, walls or not, with infinite
-/// mass, and what it drives goes with it: a wheel joint's line on a paddle spinning next to the
-/// floor sweeps through the floor, and a body sliding 20 m out along that line is pressed into
-/// the 5 m wall until it comes out on either side (seed 7, episode 17,592 of the jointed
-/// one-hour soak), with a body on a rod to it (seed 22, episode 16,077); a 23 cm, 26 kg body
-/// caught between a paddle's tip and a wall is squeezed through the wall (seed 8 --prismatic off,
-/// episode 23,125: no solver can hold both an infinitely heavy driver and a wall), and a 10 m
-/// plank pinned to a paddle presses another 10 m body into the floor (seed 8 --prismatic off,
-/// episode 8,772). Such a body
-/// can reach anywhere its driver goes, so the arena bound does not hold it; nor once freed, if
-/// it was left in a wall: a 10 m body pressed 4.6 m deep into the 5 m floor by a slider on a
-/// paddle, then freed when the game destroyed the paddle, is pushed out of the nearer face, the
-/// floor's underside (the sliders' one-hour soak, seed 7, episode 8,844).
+/// dynamic bodies links the two. A kinematic body goes where it is sent, walls or not, with
+/// infinite mass, and what it drives goes with it (a body on a paddle's slider pressed into a wall,
+/// or squeezed between the paddle and a wall: no solver can hold both an infinitely heavy driver
+/// and a wall). Such a body can reach anywhere its driver goes, so the arena bound does not hold
+/// it; nor once freed, if it was left in a wall (it is pushed out of the nearer face).
+/// docs/reliability.md ("Soak") lists the episodes that showed it.
 bool drivenByKinematic(const Episode& e, BodyId b) {
   std::vector<ContactData> contacts;
   e.world.contacts(contacts);
