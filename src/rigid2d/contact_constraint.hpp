@@ -57,8 +57,8 @@ struct ContactConstraint {
   const SolverBodyInfo& b = w.bodyInfo[contact.bodyB];
   const Manifold& m = contact.manifold;
   ContactConstraint c;
-  c.indexA = a.solverIndex;
-  c.indexB = b.solverIndex;
+  c.indexA = w.solverIndexOf(a);
+  c.indexB = w.solverIndexOf(b);
   c.contact = slot;
   c.mA = a.inverseMass;
   c.iA = a.inverseInertia;

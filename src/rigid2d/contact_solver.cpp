@@ -317,9 +317,9 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
     list.clear();
   }
   d.overflowJoints.clear();
-  for (std::uint32_t slot = 0; slot < w.joints.size(); ++slot) {
+  for (const std::uint32_t slot : w.solvedJoints) {
     const Joint& joint = w.joints[slot];
-    if (!joint.solved || joint.type() == JointType::filter) {
+    if (joint.type() == JointType::filter) {
       continue;
     }
     const std::uint32_t ia = joint.frame.indexA;
@@ -376,7 +376,7 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
   d.pushSpeed = w.def.maxContactPushSpeed;
   d.restitutionThreshold = w.def.restitutionThreshold;
 
-  // Colour the joints, then the touching contacts that involve a moving body, in pool order.
+  // Colour the joints, then the awake set's touching contacts, in its order.
   const std::uint32_t staticIndex = w.staticIndex();
   d.bodyColours.assign(staticIndex, 0);
   colourJoints(w, d);
@@ -384,13 +384,13 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
     list.clear();
   }
   d.overflow.clear();
-  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+  for (const std::uint32_t slot : w.awakeContactSet.items()) {
     Contact& contact = w.contacts[slot];
-    if (!contact.alive || contact.sensor || contact.manifold.pointCount == 0) {
+    if (contact.sensor || contact.manifold.pointCount == 0) {
       continue;
     }
-    const std::uint32_t ia = w.bodyInfo[contact.bodyA].solverIndex;
-    const std::uint32_t ib = w.bodyInfo[contact.bodyB].solverIndex;
+    const std::uint32_t ia = w.solverIndexOf(w.bodyInfo[contact.bodyA]);
+    const std::uint32_t ib = w.solverIndexOf(w.bodyInfo[contact.bodyB]);
     if (ia == staticIndex && ib == staticIndex) {
       continue; // asleep (the world wakes a sleeper touched by a moving body before the solve)
     }

@@ -1,7 +1,7 @@
 // The joints' part of the step: the common frame of each joint, then its type's prepare, warm
-// start and solve (compositions of the solver's joint parts), in joint slot order (a fixed
-// order: results are deterministic), and after the substeps the reaction readouts and break
-// events.
+// start and solve (compositions of the solver's joint parts), for the awake set's joints in its
+// order (WorldState::solvedJoints; a fixed order: results are deterministic), and after the
+// substeps the reaction readouts and break events.
 #include "rigid2d/joints.hpp"
 
 #include <algorithm>
@@ -12,11 +12,10 @@ namespace impetus::rigid2d::detail {
 
 void prepareJoints(WorldState& w, const StepContext& context) {
   const std::uint32_t staticIndex = w.staticIndex();
-  for (Joint& joint : w.joints) {
-    joint.solved = false;
-    if (!joint.alive) {
-      continue;
-    }
+  w.awakeJointSet.compact();
+  w.solvedJoints.clear();
+  for (const std::uint32_t slot : w.awakeJointSet.items()) {
+    Joint& joint = w.joints[slot];
     const Body& a = w.bodies[joint.bodyA];
     const Body& b = w.bodies[joint.bodyB];
     if (!a.moving() && !b.moving()) {
@@ -59,7 +58,7 @@ void prepareJoints(WorldState& w, const StepContext& context) {
           joint.data);
     }
     std::visit([&](auto& data) { prepareJoint(data, f, context); }, joint.data);
-    joint.solved = true;
+    w.solvedJoints.push_back(slot);
   }
 }
 
@@ -84,27 +83,22 @@ void solveJoint(WorldState& w, std::uint32_t slot, const StepContext& context, b
 }
 
 void warmStartJoints(WorldState& w) {
-  for (std::uint32_t slot = 0; slot < w.joints.size(); ++slot) {
-    if (w.joints[slot].solved) {
-      warmStartJoint(w, slot);
-    }
+  for (const std::uint32_t slot : w.solvedJoints) {
+    warmStartJoint(w, slot);
   }
 }
 
 void solveJoints(WorldState& w, const StepContext& context, bool useBias) {
-  for (std::uint32_t slot = 0; slot < w.joints.size(); ++slot) {
-    if (w.joints[slot].solved) {
-      solveJoint(w, slot, context, useBias);
-    }
+  for (const std::uint32_t slot : w.solvedJoints) {
+    solveJoint(w, slot, context, useBias);
   }
 }
 
 void finishJoints(WorldState& w, const StepContext& context) {
   w.lastInverseH = context.inverseH;
-  for (Joint& joint : w.joints) {
-    if (!joint.solved) {
-      continue; // asleep: it still carries what it carried when it fell asleep
-    }
+  // A sleeping joint still carries what it carried when it fell asleep.
+  for (const std::uint32_t slot : w.solvedJoints) {
+    Joint& joint = w.joints[slot];
     joint.reaction =
         std::visit([&](const auto& data) { return jointReaction(data, joint.frame, context.inverseH); }, joint.data);
     const float force = length(joint.reaction.force);

@@ -34,7 +34,6 @@ struct Joint {
   bool alive = false;
   JointFrame frame;       ///< this step's solver view (valid while solved)
   JointReaction reaction; ///< over the last step, N and N m
-  bool solved = false;    ///< taken part in this step's solve (a moving body)
 
   [[nodiscard]] JointType type() const noexcept { return static_cast<JointType>(data.index()); }
 };

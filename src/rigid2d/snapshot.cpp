@@ -4,7 +4,8 @@
 // What the next steps depend on, and so what is saved: every live body's motion, applied force
 // and sleep state; every shape's fat box (it decides when the broadphase looks for new pairs);
 // the broadphase's move buffer; the contact pool slot by slot (slot order is the solve order)
-// with its free list and every contact's manifold and warm-start impulses; every joint. What is
+// with its free list and every contact's manifold and warm-start impulses; every joint; the
+// awake set's order (the order contacts are coloured in) and the islands. What is
 // not: the trees' shape (new pairs are sorted before they become contacts, so the order a tree
 // finds them in never matters), the solver's scratch (rebuilt each step), and the structure
 // (bodies, shapes and joints), which must be the one the snapshot was saved from: a hash of the
@@ -28,7 +29,7 @@ using detail::Shape;
 using detail::WorldState;
 
 constexpr std::uint32_t snapshotMagic = 0x53443249; // "I2DS"
-constexpr std::uint32_t snapshotVersion = 3;
+constexpr std::uint32_t snapshotVersion = 4;
 
 static_assert(std::is_trivially_copyable_v<Contact>);
 static_assert(std::is_trivially_copyable_v<Joint>);
@@ -108,6 +109,31 @@ void putList(Writer& out, const std::vector<std::uint32_t>& list) {
   }
 }
 
+/// Writes a slot list's slots in order, without its holes.
+void putSlots(Writer& out, const solver::SlotList& list) {
+  out.put(static_cast<std::uint32_t>(list.size()));
+  for (const std::uint32_t slot : list.items()) {
+    if (slot != solver::SlotList::hole) {
+      out.put(slot);
+    }
+  }
+}
+
+/// Reads what putSlots wrote into `list` (its own storage: nothing allocated once warmed up).
+template <class Valid>
+void getSlots(Reader& in, solver::SlotList& list, std::size_t bound, const char* what, const Valid& valid) {
+  const auto n = in.get<std::uint32_t>();
+  list.clear();
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const auto slot = in.get<std::uint32_t>();
+    if (slot >= bound || !valid(slot)) {
+      throw Error("snapshot",
+                  std::string("snapshot: an awake ") + what + " that is not (" + std::to_string(slot) + ")");
+    }
+    list.add(slot);
+  }
+}
+
 void getList(Reader& in, std::vector<std::uint32_t>& list, std::size_t bound) {
   const auto n = in.get<std::uint32_t>();
   list.clear();
@@ -161,6 +187,10 @@ void World::saveState(WorldSnapshot& out) const {
       put.put(j);
     }
   }
+  putSlots(put, w.awakeBodySet);
+  putSlots(put, w.awakeContactSet);
+  putSlots(put, w.awakeJointSet);
+  w.islands.save(put);
 }
 
 void World::restoreState(const WorldSnapshot& snapshot) {
@@ -235,8 +265,24 @@ void World::restoreState(const WorldSnapshot& snapshot) {
       j = in.get<Joint>();
     }
   }
+  // The awake set, in its order, and the islands: only live bodies and contacts.
+  getSlots(in, w.awakeBodySet, w.bodies.size(), "body", [&](std::uint32_t slot) { return w.bodies[slot].moving(); });
+  getSlots(in, w.awakeContactSet, contactSlots, "contact", [&](std::uint32_t slot) { return w.contacts[slot].alive; });
+  getSlots(in, w.awakeJointSet, w.joints.size(), "joint", [&](std::uint32_t slot) { return w.joints[slot].alive; });
+  w.islands.load(in, w.bodies.size(), [](std::uint32_t slot) {
+    throw Error("snapshot", "snapshot: an island's body or slot out of place (" + std::to_string(slot) + ")");
+  });
+  for (const Body& b : w.bodies) {
+    if (b.alive && (b.type != BodyType::staticBody) != (w.islands.islandOf(b.id.index) != solver::Islands::none)) {
+      throw Error("snapshot",
+                  "snapshot: a body in no island, or a static body in one (" + std::to_string(b.id.index) + ")");
+    }
+  }
+  for (detail::SolverBodyInfo& info : w.bodyInfo) {
+    info.solverIndex = detail::noSolverIndex; // refreshed for the awake bodies by the next step
+  }
   if (!in.done()) {
-    throw Error("snapshot", "snapshot: trailing bytes after the joints");
+    throw Error("snapshot", "snapshot: trailing bytes after the islands");
   }
   // This step's events belong to the timeline that was left (cleared, keeping their capacity).
   for (ContactEvents* events : {&w.contactEvents, &w.pendingEvents}) {

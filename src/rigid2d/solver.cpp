@@ -37,19 +37,15 @@ constexpr float maxRotationPerSubstep = 0.25f * pi<float>;
 } // namespace
 
 void buildSolverBodies(WorldState& w) {
-  w.awakeBodies.clear();
-  for (std::uint32_t slot = 0; slot < w.bodies.size(); ++slot) {
-    Body& b = w.bodies[slot];
-    if (b.moving()) {
-      b.solverIndex = static_cast<std::uint32_t>(w.awakeBodies.size());
-      w.awakeBodies.push_back(slot);
-    }
-  }
+  // The awake set, compacted, is this step's solver order.
+  w.awakeBodySet.compact();
+  const std::span<const std::uint32_t> awake = w.awakeBodySet.items();
+  w.awakeBodies.assign(awake.begin(), awake.end());
   const auto n = static_cast<std::uint32_t>(w.awakeBodies.size());
-  w.bodyInfo.resize(w.bodies.size());
-  for (std::uint32_t slot = 0; slot < w.bodies.size(); ++slot) {
-    const Body& b = w.bodies[slot];
-    w.bodyInfo[slot] = {b.moving() ? b.solverIndex : n, b.inverseMass, b.inverseInertia, b.center - b.transform.p};
+  for (std::uint32_t i = 0; i < n; ++i) {
+    Body& b = w.bodies[w.awakeBodies[i]];
+    b.solverIndex = i;
+    w.bodyInfo[w.awakeBodies[i]] = {i, b.inverseMass, b.inverseInertia, b.center - b.transform.p};
   }
   w.states.resize(n + 2);
   w.sims.resize(n);

@@ -160,6 +160,9 @@ void createContact(WorldState& w, std::uint64_t key) {
     }
     body.contactHead = detail::contactEdgeKey(slot, edge);
   }
+  if (w.bodies[c.bodyA].moving() || w.bodies[c.bodyB].moving()) {
+    w.awakeContactSet.add(slot);
+  }
 }
 
 /// Whether the game's custom filter lets a new pair (key: lower shape slot, higher) collide:
@@ -225,34 +228,31 @@ enum TouchChange : std::uint8_t {
 
 [[nodiscard]] bool asleep(const Body& b) noexcept { return b.alive && b.type != BodyType::staticBody && !b.awake; }
 
-/// Recomputes the manifolds of contacts with a moving body (in parallel: each writes only its
-/// own contact), then, in slot order, ends the contacts whose fat boxes no longer overlap and
-/// reports begin and end events. True when a touching contact joins a moving body to a sleeping
-/// one.
-bool collideContacts(WorldState& w) {
-  w.touchChanges.assign(w.contacts.size(), unchanged);
+/// Recomputes the manifolds of the awake set's contacts (in parallel: each writes only its own
+/// contact), then, in the set's order, ends the contacts whose fat boxes no longer overlap,
+/// wakes the sleeping islands that a moving body touches, joins the islands of contacts that
+/// begin touching, and reports begin and end events.
+void collideContacts(WorldState& w) {
+  w.awakeContactSet.compact();
+  const auto count = static_cast<std::uint32_t>(w.awakeContactSet.size());
+  w.touchChanges.assign(count, unchanged);
   const float reuseDistance = w.def.contactReuseDistance;
   const float reuseTurnSine = std::sin(w.def.contactReuseAngle);
-  w.parallelFor(static_cast<std::uint32_t>(w.contacts.size()), 64, [&](std::uint32_t begin, std::uint32_t end) {
-    for (std::uint32_t slot = begin; slot < end; ++slot) {
-      Contact& contact = w.contacts[slot];
-      if (!contact.alive) {
-        continue;
-      }
+  const std::uint32_t* awakeContacts = w.awakeContactSet.items().data();
+  w.parallelFor(count, 64, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t k = begin; k < end; ++k) {
+      Contact& contact = w.contacts[awakeContacts[k]];
       if (!overlaps(w.fatBoxes[contact.shapeA], w.fatBoxes[contact.shapeB])) {
-        w.touchChanges[slot] = disjoint;
+        w.touchChanges[k] = disjoint;
         continue;
       }
       const Body& bodyA = w.bodies[contact.bodyA];
       const Body& bodyB = w.bodies[contact.bodyB];
-      if (!bodyA.moving() && !bodyB.moving()) {
-        continue; // nothing moved: the manifold stands
-      }
       const bool sleeper = !contact.sensor && (asleep(bodyA) || asleep(bodyB));
       if (reuseDistance > 0.0f && contact.reusable && contact.manifold.pointCount > 0 &&
           carryManifold(contact, bodyA.transform, bodyB.transform, reuseDistance, reuseTurnSine)) {
         // The same features, points carried along: still touching, impulses kept.
-        w.touchChanges[slot] = sleeper ? touchesSleeper : unchanged;
+        w.touchChanges[k] = sleeper ? touchesSleeper : unchanged;
         continue;
       }
       const Manifold old = contact.manifold;
@@ -268,10 +268,10 @@ bool collideContacts(WorldState& w) {
       const bool wasTouching = old.pointCount > 0;
       if (touching != wasTouching) {
         // Remember the old manifold's point count: the end event needs to know it touched.
-        w.touchChanges[slot] = touching ? began : ended;
+        w.touchChanges[k] = touching ? began : ended;
       }
       if (touching && sleeper) {
-        w.touchChanges[slot] |= touchesSleeper;
+        w.touchChanges[k] |= touchesSleeper;
       }
       // Warm starting: a point with the same features as last step keeps its impulses.
       for (int i = 0; i < contact.manifold.pointCount; ++i) {
@@ -289,25 +289,45 @@ bool collideContacts(WorldState& w) {
       }
     }
   });
-  bool sleeperTouched = false;
-  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
-    const std::uint8_t change = w.touchChanges[slot] & changeBits;
-    sleeperTouched = sleeperTouched || (w.touchChanges[slot] & touchesSleeper) != 0;
-    if (change == unchanged) {
+  // The awake set grows as islands wake, and holes open where contacts end: by index, over the
+  // contacts collided above.
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const std::uint8_t flags = w.touchChanges[k];
+    if (flags == unchanged) {
       continue;
     }
+    const std::uint32_t slot = w.awakeContactSet.items()[k];
     const Contact& c = w.contacts[slot];
+    if ((flags & touchesSleeper) != 0) {
+      // A moving body touches a sleeping one: its island wakes and joins this step's solve.
+      for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
+        if (asleep(w.bodies[body])) {
+          detail::wakeIsland(w, w.islands.islandOf(body));
+        }
+      }
+    }
+    const std::uint8_t change = flags & changeBits;
     if (change == disjoint) {
       if (c.manifold.pointCount > 0) {
         // A support went away (teleported, say): what rested on it must fall.
-        w.bodies[c.bodyA].wake();
-        w.bodies[c.bodyB].wake();
+        detail::wakeBody(w, c.bodyA);
+        detail::wakeBody(w, c.bodyB);
       }
       detail::destroyContact(w, slot, w.contactEvents, w.sensorEvents);
       continue;
     }
+    if (change != unchanged && detail::joinsIslands(w, c)) {
+      if (change == began) {
+        w.islands.link(c.bodyA, c.bodyB);
+      } else {
+        w.islands.unlink(c.bodyA, c.bodyB);
+      }
+    }
     const Shape& a = w.shapes[c.shapeA];
     const Shape& b = w.shapes[c.shapeB];
+    if (change == unchanged) {
+      continue;
+    }
     if (c.sensor) {
       const SensorEvent e = a.sensor ? SensorEvent{a.id, b.id} : SensorEvent{b.id, a.id};
       (change == began ? w.sensorEvents.begins : w.sensorEvents.ends).push_back(e);
@@ -317,7 +337,7 @@ bool collideContacts(WorldState& w) {
       w.contactEvents.ends.push_back({a.id, b.id});
     }
   }
-  return sleeperTouched;
+  w.awakeContactSet.compact();
 }
 
 void synchronizeShapes(WorldState& w, Body& b) {
@@ -361,13 +381,13 @@ void World::setTransform(BodyId id, const Vec2f& position, float angle) {
   requireFinite(angle, "angle");
   Impl& w = *impl_;
   Body& b = w.body(id);
-  b.wake();
+  detail::wakeBody(w, id.index);
   // What touches it (rests on it, or is pushed by it) reacts too: its own contacts only.
   for (std::uint32_t key = b.contactHead; key != detail::noContactEdge;) {
     const Contact& c = w.contacts[key >> 1];
     if (c.manifold.pointCount > 0) {
-      w.bodies[c.bodyA].wake();
-      w.bodies[c.bodyB].wake();
+      detail::wakeBody(w, c.bodyA);
+      detail::wakeBody(w, c.bodyB);
     }
     key = c.next[key & 1U];
   }
@@ -398,7 +418,7 @@ void World::step(float dt) {
   profile = {};
   updatePairs(w);
   profile.pairs = clock.lap();
-  detail::wakeTouched(w, collideContacts(w));
+  collideContacts(w);
   w.maybeHit.assign(w.contacts.size(), 0);
   profile.collide = clock.lap();
   if (w.def.solver == SolverKind::bookImpulse) {
@@ -407,7 +427,7 @@ void World::step(float dt) {
     detail::solve(w, dt);
   }
   profile.solve = clock.lap();
-  for (std::uint32_t slot = 0; slot < w.contacts.size(); ++slot) {
+  for (const std::uint32_t slot : w.awakeContactSet.items()) {
     if (w.maybeHit[slot] == 0) {
       continue;
     }
@@ -477,6 +497,10 @@ namespace detail {
 void destroyContact(WorldState& w, std::uint32_t slot, ContactEvents& events, SensorEvents& sensors) {
   Contact& c = w.contacts[slot];
   reportEnd(w, c, events, sensors);
+  if (c.manifold.pointCount > 0 && joinsIslands(w, c)) {
+    w.islands.unlink(c.bodyA, c.bodyB);
+  }
+  w.awakeContactSet.remove(slot);
   w.contactByPair.erase(pairKey(c.shapeA, c.shapeB));
   // Out of both bodies' lists.
   for (std::uint32_t edge = 0; edge < 2; ++edge) {

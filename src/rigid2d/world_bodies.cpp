@@ -107,6 +107,16 @@ BodyId World::createBody(const BodyDef& def) {
   b.id = id;
   b.alive = true;
   updateMass(w, b);
+  if (w.bodyInfo.size() <= id.index) {
+    w.bodyInfo.resize(id.index + 1);
+  }
+  w.bodyInfo[id.index] = detail::SolverBodyInfo{};
+  if (b.type != BodyType::staticBody) {
+    w.islands.addBody(id.index);
+    if (b.awake) {
+      w.awakeBodySet.add(id.index);
+    }
+  }
   return id;
 }
 
@@ -121,7 +131,7 @@ void World::destroyBody(BodyId id) {
   detail::bodyContacts(w, bodySlot, w.bodyContactScratch);
   for (const std::uint32_t slot : w.bodyContactScratch) {
     const Contact& c = w.contacts[slot];
-    w.bodies[c.bodyA == bodySlot ? c.bodyB : c.bodyA].wake(); // what rested on it must fall
+    detail::wakeBody(w, c.bodyA == bodySlot ? c.bodyB : c.bodyA); // what rested on it must fall
     detail::destroyContact(w, slot, w.pendingEvents, w.pendingSensorEvents);
   }
   for (std::uint32_t slot : b.shapes) {
@@ -130,6 +140,9 @@ void World::destroyBody(BodyId id) {
     w.shapeIds.freeId(s.id);
     s = Shape{};
   }
+  w.islands.removeBody(bodySlot);
+  w.awakeBodySet.remove(bodySlot);
+  w.bodyInfo[bodySlot] = detail::SolverBodyInfo{};
   b = Body{};
   w.bodyIds.freeId(id);
 }
@@ -299,7 +312,7 @@ void World::setMassData(BodyId id, const MassData& massData) {
   b.inverseInertia = b.fixedRotation ? 0.0f : 1.0f / massData.rotationalInertia;
   b.center = transformPoint(b.transform, b.localCenter);
   b.coreRadius = detail::computeCoreRadius(*impl_, b);
-  b.wake();
+  detail::wakeBody(*impl_, id.index);
 }
 
 void World::setLinearVelocity(BodyId id, const Vec2f& v) {
@@ -308,7 +321,7 @@ void World::setLinearVelocity(BodyId id, const Vec2f& v) {
   requireFinite(v, "linearVelocity");
   if (b.type != BodyType::staticBody) {
     b.linearVelocity = v;
-    b.wake();
+    detail::wakeBody(*impl_, id.index);
   }
 }
 void World::setAngularVelocity(BodyId id, float av) {
@@ -316,7 +329,7 @@ void World::setAngularVelocity(BodyId id, float av) {
   requireFinite(av, "angularVelocity");
   if (b.type != BodyType::staticBody && !b.fixedRotation) {
     b.angularVelocity = av;
-    b.wake();
+    detail::wakeBody(*impl_, id.index);
   }
 }
 void World::applyForce(BodyId id, const Vec2f& force, const Vec2f& point) {
@@ -325,12 +338,12 @@ void World::applyForce(BodyId id, const Vec2f& force, const Vec2f& point) {
   requireFinite(point, "point");
   b.force += force;
   b.torque += cross(point - b.center, force);
-  b.wake();
+  detail::wakeBody(*impl_, id.index);
 }
 void World::applyTorque(BodyId id, float torque) {
   Body& b = impl_->body(id);
   b.torque += static_cast<float>(requireFinite(torque, "torque"));
-  b.wake();
+  detail::wakeBody(*impl_, id.index);
 }
 void World::applyLinearImpulse(BodyId id, const Vec2f& impulse, const Vec2f& point) {
   Body& b = impl_->body(id);
@@ -338,23 +351,18 @@ void World::applyLinearImpulse(BodyId id, const Vec2f& impulse, const Vec2f& poi
   requireFinite(point, "point");
   b.linearVelocity += impulse * b.inverseMass;
   b.angularVelocity += b.inverseInertia * cross(point - b.center, impulse);
-  b.wake();
+  detail::wakeBody(*impl_, id.index);
 }
 
 bool World::isAwake(BodyId id) const { return impl_->body(id).awake; }
 void World::setAwake(BodyId id, bool awake) {
-  Body& b = impl_->body(id);
+  const Body& b = impl_->body(id);
   if (awake) {
-    b.wake();
-  } else if (b.type != BodyType::staticBody) {
-    b.awake = false;
-    b.linearVelocity = {};
-    b.angularVelocity = 0.0f;
+    detail::wakeBody(*impl_, id.index);
+  } else if (b.moving()) {
+    detail::sleepBodyIsland(*impl_, id.index); // its island sleeps with it, as Box2D v3
   }
 }
-std::size_t World::awakeBodyCount() const noexcept {
-  return static_cast<std::size_t>(
-      std::count_if(impl_->bodies.begin(), impl_->bodies.end(), [](const Body& b) { return b.moving(); }));
-}
+std::size_t World::awakeBodyCount() const noexcept { return impl_->awakeBodySet.size(); }
 
 } // namespace impetus::rigid2d

@@ -4,6 +4,8 @@
 // (sleeping), continuous.cpp, world_queries.cpp and snapshot.cpp.
 #pragma once
 
+#include "solver/islands.hpp"
+#include "solver/slot_list.hpp"
 #include "solver/softness.hpp"
 #include <impetus/core/id_pool.hpp>
 #include <impetus/core/task_runner.hpp>
@@ -95,10 +97,6 @@ struct Body {
 
   /// Simulated this step: alive, not static, awake.
   [[nodiscard]] bool moving() const noexcept { return alive && type != BodyType::staticBody && awake; }
-  void wake() noexcept {
-    awake = true;
-    sleepTime = 0.0f;
-  }
 };
 
 /// The contact index's key of a shape pair: (lower slot << 32) | higher slot.
@@ -189,24 +187,19 @@ struct BodySim {
   bool allowFastRotation = false; ///< BodyDef::allowFastRotation: no cap on the spin
 };
 
+/// The solver index of a body not in this step's solve (static or asleep).
+inline constexpr std::uint32_t noSolverIndex = 0xffffffffU;
+
 /// What the contact solver reads of a body each step, packed: the Body itself is large and cold,
 /// and preparing thousands of contacts would otherwise pull two of them into the cache apiece.
 struct SolverBodyInfo {
-  std::uint32_t solverIndex = 0; ///< into `states`; WorldState::staticIndex() for a body not moving
-  float inverseMass = 0.0f;      ///< 1/kg
-  float inverseInertia = 0.0f;   ///< 1/(kg m^2)
-  Vec2f centerOffset;            ///< centre of mass minus origin, world axes, m
+  /// Into `states`, for an awake body (refreshed each step); noSolverIndex for a static or
+  /// sleeping one (solverIndexOf maps it to the static state).
+  std::uint32_t solverIndex = noSolverIndex;
+  float inverseMass = 0.0f;    ///< 1/kg
+  float inverseInertia = 0.0f; ///< 1/(kg m^2)
+  Vec2f centerOffset;          ///< centre of mass minus origin, world axes, m
 };
-
-/// The union-find root of element i (path halving): the islands' sleep pass and the joints'
-/// warm start.
-inline std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
 
 struct ContactSolverData; // contact_solver.cpp
 struct Joint;             // joints.hpp
@@ -266,17 +259,24 @@ struct WorldState {
   /// step for a hit event (approachMayHit), so the events need not read every contact again.
   std::vector<std::uint8_t> maybeHit;
 
-  /// This step's moving bodies in solver order, their solver state (plus, at staticIndex(), a
-  /// never written state standing for every static body, and after it a never read one that
-  /// takes the wide solver's writes to static lanes) and integration data.
+  /// The awake set: the bodies, contacts and joints the step walks (a contact or joint while
+  /// either of its bodies is awake). A sleeping island's are out of them (island.cpp).
+  solver::SlotList awakeBodySet;
+  solver::SlotList awakeContactSet;
+  solver::SlotList awakeJointSet;
+  std::vector<std::uint32_t> solvedJoints; ///< this step's joints (the awake set's, compacted)
+  solver::Islands islands;                 ///< every non-static body's island
+  std::vector<std::uint32_t> islandPieces; ///< scratch of a split
+  /// This step's moving bodies in solver order (the awake set's, compacted), their solver state (plus, at
+  /// staticIndex(), a never written state standing for every static body, and after it a never read one that takes the
+  /// wide solver's writes to static lanes) and integration data.
   std::vector<std::uint32_t> awakeBodies;
   std::vector<BodyState> states;
   std::vector<BodySim> sims;
   std::vector<SolverBodyInfo> bodyInfo; ///< by body slot, rebuilt each step with `states`
   std::unique_ptr<ContactSolverData> contactSolver;
-  std::vector<BulletStart> bullets;        ///< scratch of the finalize pass
-  std::vector<std::uint32_t> islandParent; ///< scratch of the sleep pass (union-find by body slot)
-  std::vector<float> islandRest;           ///< scratch of the sleep pass (least rest time per island)
+  std::vector<BulletStart> bullets; ///< scratch of the finalize pass
+  std::vector<float> islandRest;    ///< scratch of the sleep pass (least rest time per island)
 
   ContactEvents contactEvents;
   SensorEvents sensorEvents;
@@ -299,6 +299,10 @@ struct WorldState {
   [[nodiscard]] DynamicTree& treeOf(const Shape& s) { return s.inStaticTree ? staticTree : movingTree; }
   /// The solver index standing for static bodies (a state that stays at rest).
   [[nodiscard]] std::uint32_t staticIndex() const noexcept { return static_cast<std::uint32_t>(awakeBodies.size()); }
+  /// A body's index into `states` this step: the static state for a body not solved.
+  [[nodiscard]] std::uint32_t solverIndexOf(const SolverBodyInfo& info) const noexcept {
+    return std::min(info.solverIndex, staticIndex());
+  }
   /// Runs task over [0, count) in ranges of at least minRange, on the task runner if any.
   void parallelFor(std::uint32_t count, std::uint32_t minRange, const TaskRunner::RangeTask& task) const;
 };
@@ -392,8 +396,6 @@ void buildSolverBodies(WorldState& w);
 /// damping, then position deltas from the new velocities.
 void integrateVelocities(WorldState& w, const StepContext& context);
 void integratePositions(WorldState& w, const StepContext& context);
-/// Holds every dynamic body within maxLinearSpeed and the largest turn per substep.
-
 // book_impulse.cpp
 /// The book's collision response (ch. 9-10, errata fixed): one step of semi-implicit Euler and
 /// one impulse per touching contact.
@@ -420,10 +422,18 @@ void storeImpulses(WorldState& w);
 [[nodiscard]] ConstraintGraphCounts constraintGraph(const WorldState& w);
 
 // island.cpp
-/// A sleeping body touched by a moving one wakes up (before the solve, so it takes part).
-/// sleeperTouched: the collide pass found a touching contact between a moving and a sleeping
-/// body (without one, only joints are looked at).
-void wakeTouched(WorldState& w, bool sleeperTouched);
+/// Wakes the body's island (a static body: nothing) and restarts the body's rest time.
+void wakeBody(WorldState& w, std::uint32_t slot);
+/// Wakes every body of the island: they and their contacts join the awake set.
+void wakeIsland(WorldState& w, std::uint32_t island);
+/// Puts every body of the island to sleep (at rest): they and the contacts that no awake body
+/// has leave the awake set.
+void sleepIsland(WorldState& w, std::uint32_t island);
+/// Puts the body's island to sleep, split first when it may have come apart (so that only the
+/// body's piece sleeps).
+void sleepBodyIsland(WorldState& w, std::uint32_t slot);
+/// Whether a touching contact joins its bodies' islands (not a sensor, neither body static).
+[[nodiscard]] bool joinsIslands(const WorldState& w, const Contact& c);
 /// Accumulates rest time and puts islands to sleep that have rested long enough.
 void updateSleep(WorldState& w, float dt);
 

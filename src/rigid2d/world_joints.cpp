@@ -135,8 +135,13 @@ JointId addJoint(WorldState& w, const JointDefBase& base, detail::JointData data
   if (a != b) {
     bodyB.joints.push_back(id.index);
   }
-  bodyA.wake();
-  bodyB.wake();
+  detail::wakeBody(w, a);
+  detail::wakeBody(w, b);
+  // A joint joins its bodies' islands (a static body is in none).
+  w.islands.link(a, b);
+  if (w.bodies[a].moving() || w.bodies[b].moving()) {
+    w.awakeJointSet.add(id.index);
+  }
   if (!j.collideConnected && a != b) {
     // The two bodies stop colliding: their contacts go, and those that touched report their
     // end with the next step's events.
@@ -158,8 +163,8 @@ template <class T> T& jointData(WorldState& w, JointId id, const char* what) {
   if (data == nullptr) {
     throwInvalid("joint id", static_cast<double>(id.index), std::string("not a ") + what + " joint");
   }
-  w.bodies[j.bodyA].wake();
-  w.bodies[j.bodyB].wake();
+  detail::wakeBody(w, j.bodyA);
+  detail::wakeBody(w, j.bodyB);
   return *data;
 }
 
@@ -284,10 +289,12 @@ JointId World::createJoint(const FilterJointDef& def) {
 void World::destroyJoint(JointId id) {
   WorldState& w = *impl_;
   Joint& j = w.joint(id);
+  w.islands.unlink(j.bodyA, j.bodyB);
+  w.awakeJointSet.remove(id.index);
   for (std::uint32_t body : {j.bodyA, j.bodyB}) {
     detail::Body& b = w.bodies[body];
     std::erase(b.joints, id.index);
-    b.wake();
+    detail::wakeBody(w, body);
     if (!j.collideConnected) {
       // The bodies may collide again: look for their pairs next step.
       for (std::uint32_t shape : b.shapes) {

@@ -90,8 +90,8 @@ void World::setJointConstraintTuning(JointId id, float hertz, float dampingRatio
   detail::Joint& j = impl_->joint(id);
   j.constraintHertz = hertz;
   j.constraintDampingRatio = dampingRatio;
-  impl_->bodies[j.bodyA].wake();
-  impl_->bodies[j.bodyB].wake();
+  detail::wakeBody(*impl_, j.bodyA);
+  detail::wakeBody(*impl_, j.bodyB);
 }
 
 } // namespace impetus::rigid2d

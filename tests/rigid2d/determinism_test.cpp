@@ -93,13 +93,9 @@ TEST(Determinism2D, joints_are_coloured_and_identical_at_any_thread_count) {
 }
 
 TEST(Determinism2D, the_reference_scene_hash_is_pinned) {
-  // The mixed scene's state after 120 steps (x86-64, g++ 12 at -O1 to -O3 and under the
-  // sanitizers, SSE2 or AVX2: all agree). A change of the solver's arithmetic changes it: when
-  // that is intended, update the value and say why in the commit and in docs/reliability.md
-  // ("Pinned", where each earlier value is listed with its reason); when it is not, this test
-  // caught it.
-  constexpr std::uint64_t pinned = 0x5d9e9c649399520aULL;
-  EXPECT_EQ(runMixedScene(nullptr), pinned) << std::hex << "now 0x" << runMixedScene(nullptr);
+  // The value and when to change it: test::pinnedMixedSceneHash (mixed_scene.hpp).
+  EXPECT_EQ(runMixedScene(nullptr), test::pinnedMixedSceneHash) << std::hex << "now 0x" << runMixedScene(nullptr);
+  EXPECT_EQ(runMixedScene(nullptr, SimdLevel::baseline), test::pinnedMixedSceneHash) << "SSE2";
 }
 
 TEST(Determinism2D, the_state_hash_sees_one_bit_of_one_body) {
