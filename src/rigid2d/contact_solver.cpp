@@ -376,7 +376,7 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
   d.pushSpeed = w.def.maxContactPushSpeed;
   d.restitutionThreshold = w.def.restitutionThreshold;
 
-  // Colour the joints, then the awake set's touching contacts, in its order.
+  // Colour the joints, then the awake set's touching contacts, in slot order.
   const std::uint32_t staticIndex = w.staticIndex();
   d.bodyColours.assign(staticIndex, 0);
   colourJoints(w, d);

@@ -1,5 +1,5 @@
 // The joints' part of the step: the common frame of each joint, then its type's prepare, warm
-// start and solve (compositions of the solver's joint parts), for the awake set's joints in its
+// start and solve (compositions of the solver's joint parts), for the awake set's joints in slot
 // order (WorldState::solvedJoints; a fixed order: results are deterministic), and after the
 // substeps the reaction readouts and break events.
 #include "rigid2d/joints.hpp"

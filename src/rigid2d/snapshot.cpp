@@ -5,7 +5,7 @@
 // and sleep state; every shape's fat box (it decides when the broadphase looks for new pairs);
 // the broadphase's move buffer; the contact pool slot by slot (slot order is the solve order)
 // with its free list and every contact's manifold and warm-start impulses; every joint; the
-// awake set's order (the order contacts are coloured in) and the islands. What is
+// awake set and the islands. What is
 // not: the trees' shape (new pairs are sorted before they become contacts, so the order a tree
 // finds them in never matters), the solver's scratch (rebuilt each step), and the structure
 // (bodies, shapes and joints), which must be the one the snapshot was saved from: a hash of the
@@ -265,7 +265,7 @@ void World::restoreState(const WorldSnapshot& snapshot) {
       j = in.get<Joint>();
     }
   }
-  // The awake set, in its order, and the islands: only live bodies and contacts.
+  // The awake set and the islands: only live bodies, contacts and joints.
   getSlots(in, w.awakeBodySet, w.bodies.size(), "body", [&](std::uint32_t slot) { return w.bodies[slot].moving(); });
   getSlots(in, w.awakeContactSet, contactSlots, "contact", [&](std::uint32_t slot) { return w.contacts[slot].alive; });
   getSlots(in, w.awakeJointSet, w.joints.size(), "joint", [&](std::uint32_t slot) { return w.joints[slot].alive; });

@@ -229,7 +229,7 @@ enum TouchChange : std::uint8_t {
 [[nodiscard]] bool asleep(const Body& b) noexcept { return b.alive && b.type != BodyType::staticBody && !b.awake; }
 
 /// Recomputes the manifolds of the awake set's contacts (in parallel: each writes only its own
-/// contact), then, in the set's order, ends the contacts whose fat boxes no longer overlap,
+/// contact), then, in slot order, ends the contacts whose fat boxes no longer overlap,
 /// wakes the sleeping islands that a moving body touches, joins the islands of contacts that
 /// begin touching, and reports begin and end events.
 void collideContacts(WorldState& w) {
