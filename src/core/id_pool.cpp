@@ -1,6 +1,9 @@
 #include <impetus/core/id_pool.hpp>
 #include <impetus/error.hpp>
 
+#include <atomic>
+#include <string>
+
 namespace impetus {
 
 IdPool::Slot IdPool::allocate() {
@@ -24,6 +27,25 @@ void IdPool::free(Slot slot) {
   ++generations_[slot.index];
   freeList_.push_back(slot.index);
   --liveCount_;
+}
+
+std::uint32_t nextWorldNumber() noexcept {
+  static std::atomic<std::uint32_t> last{0};
+  std::uint32_t number = 0;
+  while (number == 0) {
+    number = last.fetch_add(1, std::memory_order_relaxed) + 1;
+  }
+  return number;
+}
+
+void IdPool::reportInvalid(Slot slot, std::uint32_t world, const char* field, const char* what) const {
+  if (world != world_ && slot.generation != 0) {
+    throwInvalid(field, static_cast<double>(slot.index),
+                 std::string(what) + " belongs to another world (world " + std::to_string(world) + ", this is world " +
+                     std::to_string(world_) + ")");
+  }
+  throwInvalid(field, static_cast<double>(slot.index),
+               std::string(what) + " does not exist (destroyed or never created)");
 }
 
 bool IdPool::isValid(Slot slot) const noexcept {

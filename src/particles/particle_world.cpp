@@ -17,9 +17,7 @@ struct ParticleWorld::Impl : detail::ParticleWorldState {};
 namespace detail {
 
 std::uint32_t ParticleWorldState::dense(ParticleId id) const {
-  if (!particleIds.isValidId(id)) {
-    throwInvalid("particle id", static_cast<double>(id.index), "particle does not exist (destroyed or never created)");
-  }
+  particleIds.requireValid(id, "particle id", "particle");
   return slotToDense[id.index];
 }
 
@@ -85,6 +83,12 @@ Vec3f directionInCone(std::mt19937& rng, const Vec3f& axis, float cone, bool pla
 ParticleWorld::ParticleWorld(const ParticleWorldSettings& settings) : impl_(std::make_unique<Impl>()) {
   validateSettings(settings);
   impl_->settings = settings;
+  // The ids it hands out record it: another world refuses them.
+  const std::uint32_t number = nextWorldNumber();
+  for (IdPool* pool :
+       {&impl_->particleIds, &impl_->obstacleIds, &impl_->springIds, &impl_->constraintIds, &impl_->emitterIds}) {
+    *pool = IdPool(number);
+  }
 }
 ParticleWorld::~ParticleWorld() = default;
 ParticleWorld::ParticleWorld(ParticleWorld&&) noexcept = default;

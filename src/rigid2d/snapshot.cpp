@@ -262,7 +262,9 @@ void World::restoreState(const WorldSnapshot& snapshot) {
   }
   for (Joint& j : w.joints) {
     if (j.alive) {
+      const JointId id = j.id; // this world's (a replay's world has a number of its own)
       j = in.get<Joint>();
+      j.id = id;
     }
   }
   // The awake set and the islands: only live bodies, contacts and joints.

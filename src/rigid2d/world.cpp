@@ -358,6 +358,11 @@ void synchronizeShapes(WorldState& w, Body& b) {
 World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
   detail::validateWorldDef(def);
   impl_->def = def;
+  // The ids it hands out record it: another world refuses them.
+  const std::uint32_t number = nextWorldNumber();
+  impl_->bodyIds = IdPool(number);
+  impl_->shapeIds = IdPool(number);
+  impl_->jointIds = IdPool(number);
 }
 World::~World() = default;
 World::World(World&&) noexcept = default;

@@ -214,10 +214,7 @@ struct BulletStart {
 /// items[id.index] when `id` is live in `pool`, else an impetus::Error naming `field`.
 template <class T, class Tag>
 T& checkedSlot(const IdPool& pool, std::vector<T>& items, Id<Tag> id, const char* field, const char* what) {
-  if (!pool.isValidId(id)) {
-    throwInvalid(field, static_cast<double>(id.index),
-                 std::string(what) + " does not exist (destroyed or never created)");
-  }
+  pool.requireValid(id, field, what);
   return items[id.index];
 }
 

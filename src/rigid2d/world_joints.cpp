@@ -47,9 +47,7 @@ namespace {
 
 /// A valid body of the joint, or an error naming the field.
 std::uint32_t jointBody(WorldState& w, BodyId id, const char* field) {
-  if (!w.bodyIds.isValidId(id)) {
-    throwInvalid(field, static_cast<double>(id.index), "body does not exist (destroyed or never created)");
-  }
+  w.bodyIds.requireValid(id, field, "body");
   return id.index;
 }
 

@@ -107,6 +107,7 @@ TEST(Emitter, lifetimes_are_respected) {
   ParticleWorld world;
   world.addEmitter(fountain(3));
   struct Seen {
+    ParticleId id;
     float lifetime;
     float age;
     float born;
@@ -121,7 +122,7 @@ TEST(Emitter, lifetimes_are_respected) {
       ASSERT_LT(age, lifetime);
       ASSERT_GE(lifetime, 0.5f);
       ASSERT_LE(lifetime, 1.5f);
-      auto [it, fresh] = seen.try_emplace(key(id), Seen{lifetime, age, world.time() - age});
+      auto [it, fresh] = seen.try_emplace(key(id), Seen{id, lifetime, age, world.time() - age});
       if (!fresh) {
         // Age advances with the world's clock (to float rounding of the two running sums).
         ASSERT_NEAR(world.time() - it->second.born, age, 1e-4f);
@@ -131,9 +132,9 @@ TEST(Emitter, lifetimes_are_respected) {
   }
   // Those that died were last seen less than one step before the end of their life.
   int died = 0;
-  for (const auto& [k, s] : seen) {
-    const ParticleId id{static_cast<std::uint32_t>(k & 0xffffffffU), static_cast<std::uint32_t>(k >> 32)};
-    if (!world.isValid(id)) {
+  for (const auto& entry : seen) {
+    const Seen& s = entry.second;
+    if (!world.isValid(s.id)) {
       ++died;
       EXPECT_GE(s.age + dt, s.lifetime - 1e-4f);
     }

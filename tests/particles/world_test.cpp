@@ -418,7 +418,9 @@ TEST(ParticleWorld, identical_worlds_stay_bit_identical) {
   EXPECT_EQ(std::memcmp(a.positions().data(), b.positions().data(), a.particleCount() * sizeof(Vec3f)), 0);
   EXPECT_EQ(std::memcmp(a.velocities().data(), b.velocities().data(), a.particleCount() * sizeof(Vec3f)), 0);
   for (std::size_t i = 0; i < a.particleCount(); ++i) {
-    ASSERT_EQ(a.ids()[i], b.ids()[i]);
+    // The same slots and generations (each world's ids record their own world).
+    ASSERT_EQ(a.ids()[i].index, b.ids()[i].index);
+    ASSERT_EQ(a.ids()[i].generation, b.ids()[i].generation);
     ASSERT_TRUE(isFinite(a.positions()[i]));
   }
 }

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <tuple>
 
 namespace impetus::rigid2d {
 namespace {
@@ -198,16 +200,17 @@ TEST(World2D, same_inputs_give_identical_results) {
   const auto run = [] {
     World world;
     addGround(world);
+    std::vector<BodyId> boxes;
     for (int i = 0; i < 30; ++i) {
-      addBox(world, {0.1f * static_cast<float>(i % 7), 1.0f + 1.1f * static_cast<float>(i)}, 0.4f, 0.6f,
-             0.1f * static_cast<float>(i));
+      boxes.push_back(addBox(world, {0.1f * static_cast<float>(i % 7), 1.0f + 1.1f * static_cast<float>(i)}, 0.4f, 0.6f,
+                             0.1f * static_cast<float>(i)));
     }
     for (int i = 0; i < 200; ++i) {
       world.step(dt);
     }
     std::vector<float> state;
-    for (std::uint32_t k = 1; k <= 30; ++k) {
-      const Transform2f xf = world.transform({k, 1});
+    for (const BodyId box : boxes) {
+      const Transform2f xf = world.transform(box);
       state.insert(state.end(), {xf.p.x, xf.p.y, xf.q.c, xf.q.s});
     }
     return state;
@@ -578,6 +581,73 @@ TEST(World2D, spin_is_capped_at_a_quarter_turn_a_substep_unless_the_body_allows_
     EXPECT_NEAR(world.angularVelocity(id), fast ? 1000.0f : cap, fast ? 1e-3f : 1e-3f * cap) << fast;
     EXPECT_NEAR(world.position(id).x, def.maxLinearSpeed / 60.0f, 1e-3f) << fast;
   }
+}
+
+} // namespace
+} // namespace impetus::rigid2d
+
+namespace impetus::rigid2d {
+namespace {
+
+/// The message of the impetus::Error that `f` throws ("" when none).
+template <class F> std::string thrownMessage(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Ids record the world that made them: two worlds built alike hand out the same slots, and an id
+// of one passed to the other is refused by name, not taken for the other's body in that slot.
+TEST(World2D, ids_of_another_world_are_refused) {
+  const auto build = [](World& world) {
+    const BodyId ground = world.createBody({});
+    world.createShape(ground, {}, makeBox(5.0f, 0.5f));
+    BodyDef def;
+    def.type = BodyType::dynamicBody;
+    def.position = {0.0f, 2.0f};
+    const BodyId box = world.createBody(def);
+    const ShapeId shape = world.createShape(box, {}, makeBox(0.5f, 0.5f));
+    RevoluteJointDef joint;
+    joint.bodyA = ground;
+    joint.bodyB = box;
+    return std::tuple{box, shape, world.createJoint(joint)};
+  };
+  World first;
+  World second;
+  const auto [box, shape, joint] = build(first);
+  const auto [otherBox, otherShape, otherJoint] = build(second);
+  EXPECT_EQ(box.index, otherBox.index); // the same slot, generation ...
+  EXPECT_EQ(box.generation, otherBox.generation);
+  EXPECT_NE(box, otherBox); // ... but not the same body
+  EXPECT_TRUE(first.isValid(box));
+  EXPECT_FALSE(second.isValid(box));
+  EXPECT_FALSE(second.isValid(shape));
+  EXPECT_FALSE(second.isValid(joint));
+  expectErrorField([&] { (void)second.position(box); }, "body id");
+  expectErrorField([&] { (void)second.shapeBody(shape); }, "shape id");
+  expectErrorField([&] { second.destroyJoint(joint); }, "joint id");
+  RevoluteJointDef mixed;
+  mixed.bodyA = otherBox;
+  mixed.bodyB = box; // first's box in the second world
+  expectErrorField([&] { second.createJoint(mixed); }, "bodyB");
+  EXPECT_NE(thrownMessage([&] {
+              second.applyForce(box, {1.0f, 0.0f}, {});
+            }).find("belongs to another world"),
+            std::string::npos);
+  // A snapshot of one continues in the other (a replay), whose ids stay its own.
+  WorldSnapshot snapshot;
+  first.saveState(snapshot);
+  second.restoreState(snapshot);
+  std::vector<JointId> joints;
+  second.jointIds(joints);
+  ASSERT_EQ(joints.size(), 1U);
+  EXPECT_EQ(joints[0], otherJoint);
+  EXPECT_EQ(second.jointBodyB(otherJoint), otherBox);
+  second.step(1.0f / 60.0f);
+  EXPECT_TRUE(second.isValid(otherShape));
 }
 
 } // namespace
