@@ -112,7 +112,7 @@ bool Rigid2dSample::mouseDown(const Vec2f& p, MouseButton button) {
 void Rigid2dSample::mouseMove(const Vec2f& p) {
   if (drag_ && world_.isValid(drag_->joint)) {
     drag_->target = p;
-    world_.setMouseTarget(drag_->joint, p);
+    setMouseTarget(world_, drag_->joint, p);
   }
 }
 

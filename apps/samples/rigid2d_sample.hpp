@@ -57,7 +57,7 @@ protected:
 
 private:
   struct Drag {
-    rigid2d::JointId joint;
+    rigid2d::MouseJointId joint;
     rigid2d::BodyId body;
     Vec2f localAnchor; ///< the grabbed point, body frame, m
     Vec2f target;      ///< world, m

@@ -183,7 +183,7 @@ std::pair<Vec2f, Vec2f> worldAnchors(const WorldState& w, const Joint& j) {
 
 } // namespace
 
-JointId World::createJoint(const RevoluteJointDef& def) {
+RevoluteJointId World::createJoint(const RevoluteJointDef& def) {
   requireFinite(def.referenceAngle, "referenceAngle");
   if (def.enableLimit) {
     validateRevoluteLimits(def.lowerAngle, def.upperAngle);
@@ -194,10 +194,10 @@ JointId World::createJoint(const RevoluteJointDef& def) {
   validateSpring(def.hertz, def.dampingRatio);
   detail::RevoluteJoint j;
   j.def = def;
-  return addJoint(*impl_, def, j);
+  return {addJoint(*impl_, def, j)};
 }
 
-JointId World::createJoint(const PrismaticJointDef& def) {
+PrismaticJointId World::createJoint(const PrismaticJointDef& def) {
   requireFinite(def.referenceAngle, "referenceAngle");
   if (def.enableLimit) {
     validateLimits(def.lowerTranslation, def.upperTranslation, "lowerTranslation", "upperTranslation");
@@ -208,10 +208,10 @@ JointId World::createJoint(const PrismaticJointDef& def) {
   detail::PrismaticJoint j;
   j.def = def;
   j.def.localAxisA = unitAxis(def.localAxisA);
-  return addJoint(*impl_, def, j);
+  return {addJoint(*impl_, def, j)};
 }
 
-JointId World::createJoint(const DistanceJointDef& def) {
+DistanceJointId World::createJoint(const DistanceJointDef& def) {
   requirePositive(def.length, "length");
   if (def.enableLimit) {
     requireNonNegative(def.minLength, "minLength");
@@ -224,10 +224,10 @@ JointId World::createJoint(const DistanceJointDef& def) {
   validateSpring(def.hertz, def.dampingRatio);
   detail::DistanceJoint j;
   j.def = def;
-  return addJoint(*impl_, def, j);
+  return {addJoint(*impl_, def, j)};
 }
 
-JointId World::createJoint(const WeldJointDef& def) {
+WeldJointId World::createJoint(const WeldJointDef& def) {
   requireFinite(def.referenceAngle, "referenceAngle");
   requireNonNegative(def.linearHertz, "linearHertz");
   requireNonNegative(def.linearDampingRatio, "linearDampingRatio");
@@ -235,10 +235,10 @@ JointId World::createJoint(const WeldJointDef& def) {
   requireNonNegative(def.angularDampingRatio, "angularDampingRatio");
   detail::WeldJoint j;
   j.def = def;
-  return addJoint(*impl_, def, j);
+  return {addJoint(*impl_, def, j)};
 }
 
-JointId World::createJoint(const WheelJointDef& def) {
+WheelJointId World::createJoint(const WheelJointDef& def) {
   if (def.enableLimit) {
     validateLimits(def.lowerTranslation, def.upperTranslation, "lowerTranslation", "upperTranslation");
   }
@@ -248,10 +248,10 @@ JointId World::createJoint(const WheelJointDef& def) {
   detail::WheelJoint j;
   j.def = def;
   j.def.localAxisA = unitAxis(def.localAxisA);
-  return addJoint(*impl_, def, j);
+  return {addJoint(*impl_, def, j)};
 }
 
-JointId World::createJoint(const MotorJointDef& def) {
+MotorJointId World::createJoint(const MotorJointDef& def) {
   requireFinite(def.linearOffset, "linearOffset");
   requireFinite(def.angularOffset, "angularOffset");
   requireNonNegative(def.maxForce, "maxForce");
@@ -261,10 +261,10 @@ JointId World::createJoint(const MotorJointDef& def) {
   }
   detail::MotorJoint j;
   j.def = def;
-  return addJoint(*impl_, def, j);
+  return {addJoint(*impl_, def, j)};
 }
 
-JointId World::createJoint(const MouseJointDef& def) {
+MouseJointId World::createJoint(const MouseJointDef& def) {
   requireFinite(def.target, "target");
   validateSpring(def.hertz, def.dampingRatio);
   requireNonNegative(def.maxForce, "maxForce");
@@ -272,16 +272,16 @@ JointId World::createJoint(const MouseJointDef& def) {
   j.def = def;
   // The mouse joint pulls B toward a world point: body A is a placeholder for B (the joint's
   // solver treats it as static).
-  return addJoint(*impl_, def, j, false);
+  return {addJoint(*impl_, def, j, false)};
 }
 
-JointId World::createJoint(const FilterJointDef& def) {
+FilterJointId World::createJoint(const FilterJointDef& def) {
   if (def.collideConnected) {
     throwInvalid("collideConnected", 1.0, "a filter joint only stops its bodies colliding: it must be false");
   }
   detail::FilterJoint j;
   j.def = def;
-  return addJoint(*impl_, def, j);
+  return {addJoint(*impl_, def, j)};
 }
 
 void World::destroyJoint(JointId id) {
@@ -323,100 +323,136 @@ Vec2f World::jointReactionForce(JointId id) const { return impl_->joint(id).reac
 float World::jointReactionTorque(JointId id) const { return impl_->joint(id).reaction.torque; }
 const JointEvents& World::jointEvents() const noexcept { return impl_->jointEvents; }
 
-float World::revoluteAngle(JointId id) const {
-  const auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
-  const Joint& j = impl_->joint(id);
-  const double angle = detail::relativeAngle(impl_->bodies[j.bodyB].transform.q, impl_->bodies[j.bodyA].transform.q);
+namespace detail {
+/// What the joint types' free functions reach of a world.
+struct WorldAccess {
+  static WorldState& state(World& world) { return *world.impl_; }
+  static const WorldState& state(const World& world) { return *world.impl_; }
+};
+} // namespace detail
+
+float revoluteAngle(const World& world, RevoluteJointId joint) {
+  const detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
+  const auto& r = jointData<detail::RevoluteJoint>(w, id, "revolute");
+  const Joint& j = w.joint(id);
+  const double angle = detail::relativeAngle(w.bodies[j.bodyB].transform.q, w.bodies[j.bodyA].transform.q);
   return static_cast<float>(std::remainder(angle - r.def.referenceAngle, 2.0 * pi<double>));
 }
 
-float World::revoluteMotorTorque(JointId id) const {
-  const auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
-  return r.motor.impulse * impl_->lastInverseH;
+float revoluteMotorTorque(const World& world, RevoluteJointId joint) {
+  const detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
+  const auto& r = jointData<detail::RevoluteJoint>(w, id, "revolute");
+  return r.motor.impulse * w.lastInverseH;
 }
 
-void World::setRevoluteMotor(JointId id, bool enable, float speed, float maxTorque) {
+void setRevoluteMotor(World& world, RevoluteJointId joint, bool enable, float speed, float maxTorque) {
+  detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
   requireFinite(speed, "motorSpeed");
   requireNonNegative(maxTorque, "maxMotorTorque");
-  auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
+  auto& r = jointData<detail::RevoluteJoint>(w, id, "revolute");
   r.def.enableMotor = enable;
   r.def.motorSpeed = speed;
   r.def.maxMotorTorque = maxTorque;
 }
 
-void World::setRevoluteLimit(JointId id, bool enable, float lower, float upper) {
+void setRevoluteLimit(World& world, RevoluteJointId joint, bool enable, float lower, float upper) {
+  detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
   validateRevoluteLimits(lower, upper);
-  auto& r = jointData<detail::RevoluteJoint>(*impl_, id, "revolute");
+  auto& r = jointData<detail::RevoluteJoint>(w, id, "revolute");
   r.def.enableLimit = enable;
   r.def.lowerAngle = lower;
   r.def.upperAngle = upper;
 }
 
-float World::prismaticTranslation(JointId id) const {
-  const auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
-  const Joint& j = impl_->joint(id);
-  const auto [pA, pB] = worldAnchors(*impl_, j);
-  return dot(pB - pA, rotate(impl_->bodies[j.bodyA].transform.q, p.def.localAxisA));
+float prismaticTranslation(const World& world, PrismaticJointId joint) {
+  const detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
+  const auto& p = jointData<detail::PrismaticJoint>(w, id, "prismatic");
+  const Joint& j = w.joint(id);
+  const auto [pA, pB] = worldAnchors(w, j);
+  return dot(pB - pA, rotate(w.bodies[j.bodyA].transform.q, p.def.localAxisA));
 }
 
-float World::prismaticMotorForce(JointId id) const {
-  const auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
-  return p.motor.impulse * impl_->lastInverseH;
+float prismaticMotorForce(const World& world, PrismaticJointId joint) {
+  const detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
+  const auto& p = jointData<detail::PrismaticJoint>(w, id, "prismatic");
+  return p.motor.impulse * w.lastInverseH;
 }
 
-void World::setPrismaticMotor(JointId id, bool enable, float speed, float maxForce) {
+void setPrismaticMotor(World& world, PrismaticJointId joint, bool enable, float speed, float maxForce) {
+  detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
   requireFinite(speed, "motorSpeed");
   requireNonNegative(maxForce, "maxMotorForce");
-  auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
+  auto& p = jointData<detail::PrismaticJoint>(w, id, "prismatic");
   p.def.enableMotor = enable;
   p.def.motorSpeed = speed;
   p.def.maxMotorForce = maxForce;
 }
 
-void World::setPrismaticLimit(JointId id, bool enable, float lower, float upper) {
+void setPrismaticLimit(World& world, PrismaticJointId joint, bool enable, float lower, float upper) {
+  detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
   validateLimits(lower, upper, "lowerTranslation", "upperTranslation");
-  auto& p = jointData<detail::PrismaticJoint>(*impl_, id, "prismatic");
+  auto& p = jointData<detail::PrismaticJoint>(w, id, "prismatic");
   p.def.enableLimit = enable;
   p.def.lowerTranslation = lower;
   p.def.upperTranslation = upper;
 }
 
-float World::distanceJointLength(JointId id) const {
-  (void)jointData<detail::DistanceJoint>(*impl_, id, "distance");
-  const auto [pA, pB] = worldAnchors(*impl_, impl_->joint(id));
+float distanceJointLength(const World& world, DistanceJointId joint) {
+  const detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
+  (void)jointData<detail::DistanceJoint>(w, id, "distance");
+  const auto [pA, pB] = worldAnchors(w, w.joint(id));
   return distance(pA, pB);
 }
 
-void World::setDistanceJointLength(JointId id, float length) {
+void setDistanceJointLength(World& world, DistanceJointId joint, float length) {
+  detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
   requirePositive(length, "length");
-  jointData<detail::DistanceJoint>(*impl_, id, "distance").def.length = length;
+  jointData<detail::DistanceJoint>(w, id, "distance").def.length = length;
 }
 
-float World::wheelMotorTorque(JointId id) const {
-  const auto& wj = jointData<detail::WheelJoint>(*impl_, id, "wheel");
-  return wj.motor.impulse * impl_->lastInverseH;
+float wheelMotorTorque(const World& world, WheelJointId joint) {
+  const detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
+  const auto& wj = jointData<detail::WheelJoint>(w, id, "wheel");
+  return wj.motor.impulse * w.lastInverseH;
 }
 
-void World::setWheelMotor(JointId id, bool enable, float speed, float maxTorque) {
+void setWheelMotor(World& world, WheelJointId joint, bool enable, float speed, float maxTorque) {
+  detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
   requireFinite(speed, "motorSpeed");
   requireNonNegative(maxTorque, "maxMotorTorque");
-  auto& wj = jointData<detail::WheelJoint>(*impl_, id, "wheel");
+  auto& wj = jointData<detail::WheelJoint>(w, id, "wheel");
   wj.def.enableMotor = enable;
   wj.def.motorSpeed = speed;
   wj.def.maxMotorTorque = maxTorque;
 }
 
-void World::setMotorJointTarget(JointId id, const Vec2f& linearOffset, float angularOffset) {
+void setMotorJointTarget(World& world, MotorJointId joint, const Vec2f& linearOffset, float angularOffset) {
+  detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
   requireFinite(linearOffset, "linearOffset");
   requireFinite(angularOffset, "angularOffset");
-  auto& m = jointData<detail::MotorJoint>(*impl_, id, "motor");
+  auto& m = jointData<detail::MotorJoint>(w, id, "motor");
   m.def.linearOffset = linearOffset;
   m.def.angularOffset = angularOffset;
 }
 
-void World::setMouseTarget(JointId id, const Vec2f& target) {
+void setMouseTarget(World& world, MouseJointId joint, const Vec2f& target) {
+  detail::WorldState& w = detail::WorldAccess::state(world);
+  const JointId id = joint.id;
   requireFinite(target, "target");
-  jointData<detail::MouseJoint>(*impl_, id, "mouse").def.target = target;
+  jointData<detail::MouseJoint>(w, id, "mouse").def.target = target;
 }
 
 } // namespace impetus::rigid2d

@@ -29,7 +29,7 @@ TEST(FilterJoint, joined_bodies_pass_through_each_other_and_collide_again_once_i
   FilterJointDef filter;
   filter.bodyA = mover;
   filter.bodyB = still;
-  const JointId joint = world.createJoint(filter);
+  const auto joint = world.createJoint(filter);
   EXPECT_EQ(world.jointType(joint), JointType::filter);
   for (int i = 0; i < 60; ++i) { // 1 s: the mover passes right through (its centre ends at x = 0)
     world.step(dt);

@@ -48,21 +48,21 @@ TEST(Inspection2D, joints_list_in_slot_order_with_their_anchors_together) {
   pin.bodyA = ground;
   pin.bodyB = bob;
   pin.localAnchorB = {-1.0f, 0.0f};
-  const JointId first = world.createJoint(pin);
+  const auto first = world.createJoint(pin);
   DistanceJointDef rope;
   rope.bodyA = ground;
   rope.bodyB = bob;
   rope.localAnchorA = {0.0f, 1.0f};
   rope.length = std::sqrt(2.0f);
-  const JointId second = world.createJoint(rope);
+  const auto second = world.createJoint(rope);
   for (int i = 0; i < 30; ++i) {
     world.step(1.0f / 60.0f);
   }
   std::vector<JointId> joints;
   world.jointIds(joints);
   ASSERT_EQ(joints.size(), 2U);
-  EXPECT_EQ(joints[0].index, first.index);
-  EXPECT_EQ(joints[1].index, second.index);
+  EXPECT_EQ(joints[0], first.id);
+  EXPECT_EQ(joints[1], second.id);
   // The pin holds: its two anchors stay together (within the soft joint's give).
   EXPECT_LT(length(world.jointAnchorA(first) - world.jointAnchorB(first)), 0.01f);
   EXPECT_NEAR(length(world.jointAnchorA(second) - Vec2f{0.0f, 1.0f}), 0.0f, 1e-6f);

@@ -96,7 +96,7 @@ TEST(JointSoftness, bad_constraint_tuning_is_refused_naming_the_field) {
   joint.constraintDampingRatio = -0.5f;
   expectErrorField([&] { (void)world.createJoint(joint); }, "constraintDampingRatio");
   joint.constraintDampingRatio = 1.0f;
-  const JointId id = world.createJoint(joint);
+  const auto id = world.createJoint(joint);
   expectErrorField([&] { world.setJointConstraintTuning(id, -3.0f, 1.0f); }, "constraintHertz");
   expectErrorField([&] { world.setJointConstraintTuning(id, 3.0f, std::nanf("")); }, "constraintDampingRatio");
 }

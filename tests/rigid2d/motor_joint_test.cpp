@@ -66,7 +66,7 @@ TEST(MotorJoint2D, drives_body_to_offset_and_angle) {
   def.maxTorque = 1000.0f;
   def.localAnchorA = {5.0f, 5.0f}; // not used by this joint
   def.localAnchorB = {-3.0f, 1.0f};
-  const JointId id = world.createJoint(def);
+  const auto id = world.createJoint(def);
   for (int i = 0; i < 120; ++i) {
     world.step(dt);
   }
@@ -77,7 +77,7 @@ TEST(MotorJoint2D, drives_body_to_offset_and_angle) {
   EXPECT_NEAR(world.jointReactionForce(id).x, 0.0f, 0.01f);
 
   // A new target at run time: reached as well.
-  world.setMotorJointTarget(id, {-1.0f, 3.0f}, -2.5f);
+  setMotorJointTarget(world, id, {-1.0f, 3.0f}, -2.5f);
   for (int i = 0; i < 120; ++i) {
     world.step(dt);
   }
@@ -133,7 +133,7 @@ TEST(MotorJoint2D, force_and_torque_limits_bound_the_acceleration) {
   def.angularOffset = 3.0f;
   def.maxForce = 2.0f;
   def.maxTorque = 0.25f;
-  const JointId id = world.createJoint(def);
+  const auto id = world.createJoint(def);
   const float m = world.mass(box);
   const float inertia = world.rotationalInertia(box);
   const float maxAcceleration = def.maxForce / m;               // 1 m/s^2
@@ -183,7 +183,7 @@ TEST(MotorJoint2D, top_down_friction_decelerates_like_dry_friction) {
   def.bodyB = box;
   def.maxForce = 2.0f;
   def.maxTorque = 0.5f;
-  const JointId id = world.createJoint(def);
+  const auto id = world.createJoint(def);
   const float m = world.mass(box);
   const float inertia = world.rotationalInertia(box);
   const float deceleration = def.maxForce / m;               // 0.5 m/s^2
@@ -197,7 +197,7 @@ TEST(MotorJoint2D, top_down_friction_decelerates_like_dry_friction) {
   float spinStoppedAt = -1.0f;
   const Vec2f direction = normalize(v0);
   for (int i = 1; i <= 13 * 60; ++i) {
-    world.setMotorJointTarget(id, world.position(box), world.angle(box));
+    setMotorJointTarget(world, id, world.position(box), world.angle(box));
     world.step(dt);
     const float newSpeed = length(world.linearVelocity(box));
     const float newSpin = world.angularVelocity(box);
@@ -253,9 +253,9 @@ TEST(MotorJoint2D, bad_definitions_name_the_field) {
   expectErrorField([&] { (void)world.createJoint(def); }, "linearOffset.y");
   def.linearOffset = {};
   EXPECT_EQ(world.jointCount(), 0U);
-  const JointId id = world.createJoint(def); // correctionFactor 1 is allowed
-  expectErrorField([&] { world.setMotorJointTarget(id, {}, std::nanf("")); }, "angularOffset");
-  expectErrorField([&] { world.setMouseTarget(id, {}); }, "joint id");
+  const auto id = world.createJoint(def); // correctionFactor 1 is allowed
+  expectErrorField([&] { setMotorJointTarget(world, id, {}, std::nanf("")); }, "angularOffset");
+  expectErrorField([&] { setMouseTarget(world, MouseJointId{id}, {}); }, "joint id");
 }
 
 } // namespace

@@ -35,8 +35,8 @@ BodyId addBox(World& world, const Vec2f& position, float hx, float hy, float den
   return b;
 }
 
-JointId grab(World& world, BodyId body, const Vec2f& localAnchor, const Vec2f& target, float hertz, float dampingRatio,
-             float maxForce) {
+MouseJointId grab(World& world, BodyId body, const Vec2f& localAnchor, const Vec2f& target, float hertz,
+                  float dampingRatio, float maxForce) {
   MouseJointDef def;
   def.bodyB = body;
   def.localAnchorB = localAnchor;
@@ -142,7 +142,7 @@ TEST(MouseJoint2D, oscillates_as_a_damped_spring_of_the_given_frequency) {
 TEST(MouseJoint2D, static_sag_under_gravity_is_g_over_omega_squared) {
   World world; // gravity -10
   const BodyId box = addBox(world, {0.0f, 1.0f}, 0.5f, 0.5f);
-  const JointId id = grab(world, box, {}, {0.0f, 1.0f}, 5.0f, 0.7f, 1000.0f);
+  const MouseJointId id = grab(world, box, {}, {0.0f, 1.0f}, 5.0f, 0.7f, 1000.0f);
   for (int i = 0; i < 120; ++i) {
     world.step(dt);
   }
@@ -158,7 +158,7 @@ TEST(MouseJoint2D, pull_never_exceeds_max_force) {
   World world(noGravity());
   const BodyId crate = addBox(world, {}, 1.0f, 1.0f, 25.0f); // 100 kg
   const float maxForce = 50.0f;
-  const JointId id = grab(world, crate, {}, {5.0f, 0.0f}, 5.0f, 0.7f, maxForce);
+  const MouseJointId id = grab(world, crate, {}, {5.0f, 0.0f}, 5.0f, 0.7f, maxForce);
   const float m = world.mass(crate);
   float v = 0.0f;
   float worst = 0.0f;
@@ -190,13 +190,13 @@ TEST(MouseJoint2D, moving_target_drags_the_body_along) {
   const BodyId box = addBox(world, {}, 0.5f, 0.5f);
   const float hertz = 1.0f;
   const float zeta = 0.7f;
-  const JointId id = grab(world, box, {}, {}, hertz, zeta, 1000.0f);
+  const MouseJointId id = grab(world, box, {}, {}, hertz, zeta, 1000.0f);
   const float speed = 2.0f;
   Vec2f target;
   float x2 = 0.0f;
   for (int i = 1; i <= 180; ++i) {
     target = {speed * static_cast<float>(i) * dt, 0.0f};
-    world.setMouseTarget(id, target);
+    setMouseTarget(world, id, target);
     world.step(dt);
     if (i == 120) {
       x2 = world.position(box).x;
@@ -215,7 +215,7 @@ TEST(MouseJoint2D, angular_damping_lets_a_spinning_body_settle) {
   World world(noGravity());
   const BodyId box = addBox(world, {}, 1.0f, 0.5f);
   world.setAngularVelocity(box, 5.0f);
-  const JointId id = grab(world, box, {}, {}, 5.0f, 0.7f, 1000.0f);
+  const MouseJointId id = grab(world, box, {}, {}, 5.0f, 0.7f, 1000.0f);
   for (int i = 0; i < 60; ++i) {
     world.step(dt);
   }
@@ -240,9 +240,9 @@ TEST(MouseJoint2D, bad_definitions_name_the_field) {
   expectErrorField([&] { (void)world.createJoint(def); }, "target.x");
   def.target = {};
   EXPECT_EQ(world.jointCount(), 0U);
-  const JointId id = world.createJoint(def); // bodyA left null: the world
-  expectErrorField([&] { world.setMouseTarget(id, {0.0f, std::nanf("")}); }, "target.y");
-  expectErrorField([&] { world.setMotorJointTarget(id, {}, 0.0f); }, "joint id");
+  const auto id = world.createJoint(def); // bodyA left null: the world
+  expectErrorField([&] { setMouseTarget(world, id, {0.0f, std::nanf("")}); }, "target.y");
+  expectErrorField([&] { setMotorJointTarget(world, MotorJointId{id}, {}, 0.0f); }, "joint id");
 }
 
 } // namespace

@@ -54,7 +54,7 @@ TEST(PrismaticJoint2D, block_on_horizontal_slider_stays_on_the_axis) {
   def.localAnchorA = {0.0f, 2.0f};
   def.localAnchorB = {-0.5f, 0.0f};
   def.localAxisA = {3.0f, 0.0f}; // normalized on creation
-  const JointId id = world.createJoint(def);
+  const auto id = world.createJoint(def);
   float drift = 0.0f;
   float tilt = 0.0f;
   float readout = 0.0f;
@@ -63,13 +63,13 @@ TEST(PrismaticJoint2D, block_on_horizontal_slider_stays_on_the_axis) {
     drift = std::max(drift, std::abs(world.position(block).y - 2.0f));
     tilt = std::max(tilt, std::abs(world.angle(block)));
     readout =
-        std::max(readout, std::abs(world.prismaticTranslation(id) - geometricTranslation(world, ground, block, def)));
+        std::max(readout, std::abs(prismaticTranslation(world, id) - geometricTranslation(world, ground, block, def)));
   }
   EXPECT_LT(drift, 1e-3f);
   EXPECT_LT(tilt, 0.5f * pi<float> / 180.0f);
   EXPECT_LT(readout, 1e-5f);
   // Nothing acts along the axis: 2 m/s for 3 s.
-  EXPECT_NEAR(world.prismaticTranslation(id), 6.0f, 1e-3f);
+  EXPECT_NEAR(prismaticTranslation(world, id), 6.0f, 1e-3f);
   EXPECT_NEAR(world.linearVelocity(block).x, 2.0f, 1e-4f);
   const float weight = world.mass(block) * g;
   EXPECT_NEAR(world.jointReactionForce(id).y, weight, 0.01f * weight);
@@ -91,7 +91,7 @@ TEST(PrismaticJoint2D, tilted_slider_is_a_frictionless_incline) {
   PrismaticJointDef def;
   def.bodyA = ramp;
   def.bodyB = block;
-  const JointId id = world.createJoint(def);
+  const auto id = world.createJoint(def);
   const Vec2f axis{std::cos(slope), std::sin(slope)};
   float offAxis = 0.0f;
   for (int i = 0; i < 60; ++i) {
@@ -99,8 +99,8 @@ TEST(PrismaticJoint2D, tilted_slider_is_a_frictionless_incline) {
     offAxis = std::max(offAxis, std::abs(cross(axis, world.position(block) - Vec2f{1.0f, 1.0f})));
   }
   const float expected = -0.5f * g * std::sin(slope); // at t = 1 s
-  EXPECT_NEAR(world.prismaticTranslation(id), expected, 0.01f * std::abs(expected));
-  EXPECT_NEAR(world.prismaticTranslation(id), geometricTranslation(world, ramp, block, def), 1e-5f);
+  EXPECT_NEAR(prismaticTranslation(world, id), expected, 0.01f * std::abs(expected));
+  EXPECT_NEAR(prismaticTranslation(world, id), geometricTranslation(world, ramp, block, def), 1e-5f);
   EXPECT_LT(offAxis, 1e-3f);
   EXPECT_NEAR(world.angle(block), slope, 0.5f * pi<float> / 180.0f);
   // The normal force: m g cos(30 deg), along perp(axis).
@@ -123,7 +123,7 @@ TEST(PrismaticJoint2D, free_pair_conserves_momentum) {
   PrismaticJointDef def;
   def.bodyA = a;
   def.bodyB = b;
-  const JointId id = world.createJoint(def);
+  const auto id = world.createJoint(def);
   const auto momentum = [&] {
     Vec2f p;
     float l = 0.0f;
@@ -152,7 +152,7 @@ TEST(PrismaticJoint2D, free_pair_conserves_momentum) {
   EXPECT_LT(offAxis, 1e-3f);
   EXPECT_LT(twist, 0.5f * pi<float> / 180.0f);
   EXPECT_GT(std::abs(world.angularVelocity(a)), 0.1f) << "the pair turns";
-  EXPECT_GT(world.prismaticTranslation(id), 2.0f) << "B slides out (its anchor starts 0 m from A's)";
+  EXPECT_GT(prismaticTranslation(world, id), 2.0f) << "B slides out (its anchor starts 0 m from A's)";
 }
 
 struct Oscillation {
@@ -177,11 +177,11 @@ Oscillation oscillate(float hertz, float dampingRatio, float density, int turns,
   def.enableSpring = true;
   def.hertz = hertz;
   def.dampingRatio = dampingRatio;
-  const JointId id = world.createJoint(def);
+  const auto id = world.createJoint(def);
   Oscillation o;
   float previous = 0.0f;
   for (int i = 1; i <= 60 * 20; ++i) {
-    const float x0 = world.prismaticTranslation(id);
+    const float x0 = prismaticTranslation(world, id);
     world.step(dt);
     const float v = world.linearVelocity(block).y;
     if (static_cast<int>(o.turnTimes.size()) < turns && i > 1 &&
@@ -192,7 +192,7 @@ Oscillation oscillate(float hertz, float dampingRatio, float density, int turns,
     }
     previous = v;
   }
-  o.settled = world.prismaticTranslation(id);
+  o.settled = prismaticTranslation(world, id);
   EXPECT_EQ(static_cast<int>(o.turnTimes.size()), turns);
   return o;
 }
@@ -254,28 +254,28 @@ TEST(PrismaticJoint2D, motor_reaches_its_speed_within_its_force) {
     def.enableMotor = true;
     def.motorSpeed = 3.0f;
     def.maxMotorForce = maxForce;
-    const JointId id = world.createJoint(def);
+    const auto id = world.createJoint(def);
     float peak = 0.0f;
     for (int i = 0; i < 30; ++i) { // 0.5 s: 0.5 * (F - m g)/m = 5 m/s > 3 m/s when strong
       world.step(dt);
-      peak = std::max(peak, std::abs(world.prismaticMotorForce(id)));
+      peak = std::max(peak, std::abs(prismaticMotorForce(world, id)));
       if (i == 5 && strong) {
         // Still accelerating at (F - m g)/m = g.
         EXPECT_NEAR(world.linearVelocity(block).y, g * 6.0f * dt, 1e-3f);
-        EXPECT_NEAR(world.prismaticMotorForce(id), maxForce, 1e-3f * maxForce);
+        EXPECT_NEAR(prismaticMotorForce(world, id), maxForce, 1e-3f * maxForce);
       }
     }
     for (int i = 0; i < 30; ++i) {
       world.step(dt);
-      peak = std::max(peak, std::abs(world.prismaticMotorForce(id)));
+      peak = std::max(peak, std::abs(prismaticMotorForce(world, id)));
     }
     EXPECT_LE(peak, maxForce * 1.0001f);
     if (strong) {
       EXPECT_NEAR(world.linearVelocity(block).y, 3.0f, 1e-3f);
-      EXPECT_NEAR(world.prismaticMotorForce(id), weight, 1e-3f * weight);
+      EXPECT_NEAR(prismaticMotorForce(world, id), weight, 1e-3f * weight);
     } else {
       EXPECT_NEAR(world.linearVelocity(block).y, -(weight - maxForce) / world.mass(block) * 1.0f, 1e-3f);
-      EXPECT_NEAR(world.prismaticMotorForce(id), maxForce, 1e-3f * maxForce);
+      EXPECT_NEAR(prismaticMotorForce(world, id), maxForce, 1e-3f * maxForce);
     }
   }
 }
@@ -295,26 +295,26 @@ TEST(PrismaticJoint2D, limits_stop_it_under_load) {
   def.enableLimit = true;
   def.lowerTranslation = -0.5f;
   def.upperTranslation = 0.5f;
-  const JointId id = world.createJoint(def);
+  const auto id = world.createJoint(def);
   float lowest = 0.0f;
   for (int i = 0; i < 120; ++i) {
     world.step(dt);
-    lowest = std::min(lowest, world.prismaticTranslation(id));
+    lowest = std::min(lowest, prismaticTranslation(world, id));
   }
   EXPECT_GT(lowest, -0.505f) << "overshoot on impact (3.2 m/s)";
-  EXPECT_NEAR(world.prismaticTranslation(id), -0.5f, 5e-3f);
+  EXPECT_NEAR(prismaticTranslation(world, id), -0.5f, 5e-3f);
   EXPECT_NEAR(world.jointReactionForce(id).y, weight, 0.01f * weight);
-  world.setPrismaticMotor(id, true, 2.0f, 2.0f * weight);
+  setPrismaticMotor(world, id, true, 2.0f, 2.0f * weight);
   float highest = -1.0f;
   for (int i = 0; i < 120; ++i) {
     world.step(dt);
-    highest = std::max(highest, world.prismaticTranslation(id));
+    highest = std::max(highest, prismaticTranslation(world, id));
   }
   EXPECT_LT(highest, 0.505f);
-  EXPECT_NEAR(world.prismaticTranslation(id), 0.5f, 5e-3f);
+  EXPECT_NEAR(prismaticTranslation(world, id), 0.5f, 5e-3f);
   // The motor pushes at its maximum; the limit takes F - m g, so the joint's net axial force
   // on B balances the weight.
-  EXPECT_NEAR(world.prismaticMotorForce(id), 2.0f * weight, 1e-3f * weight);
+  EXPECT_NEAR(prismaticMotorForce(world, id), 2.0f * weight, 1e-3f * weight);
   EXPECT_NEAR(world.jointReactionForce(id).y, weight, 0.01f * weight);
 }
 

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 namespace impetus::rigid2d {
@@ -101,11 +102,11 @@ TEST(RevoluteJoint2D, limit_holds_under_load) {
   joint.enableLimit = true;
   joint.lowerAngle = -0.1f;
   joint.upperAngle = 0.1f;
-  const JointId id = world.createJoint(joint);
+  const auto id = world.createJoint(joint);
   for (int i = 0; i < 300; ++i) {
     world.step(dt);
   }
-  EXPECT_NEAR(world.revoluteAngle(id), -0.1f, 0.5f * pi<float> / 180.0f);
+  EXPECT_NEAR(revoluteAngle(world, id), -0.1f, 0.5f * pi<float> / 180.0f);
   // The limit carries the bar's weight moment: m g L/2 = (4 * 0.2 * 20) * 10 * 2 = 320 N m.
   EXPECT_NEAR(world.jointReactionTorque(id), 320.0f, 0.02f * 320.0f);
   // And the pin its weight: 160 N up on the bar.
@@ -126,16 +127,16 @@ TEST(RevoluteJoint2D, motor_reaches_its_speed_within_its_torque) {
   joint.enableMotor = true;
   joint.motorSpeed = 10.0f;
   joint.maxMotorTorque = 0.5f;
-  const JointId id = world.createJoint(joint);
+  const auto id = world.createJoint(joint);
   const float inertia = world.rotationalInertia(wheel);
   world.step(dt);
   // One step at full torque: w = T dt / I.
   EXPECT_NEAR(world.angularVelocity(wheel), 0.5f * dt / inertia, 1e-4f);
-  EXPECT_LE(std::abs(world.revoluteMotorTorque(id)), 0.5f * 1.0001f);
+  EXPECT_LE(std::abs(revoluteMotorTorque(world, id)), 0.5f * 1.0001f);
   float peak = 0.0f;
   for (int i = 0; i < 600; ++i) {
     world.step(dt);
-    peak = std::max(peak, std::abs(world.revoluteMotorTorque(id)));
+    peak = std::max(peak, std::abs(revoluteMotorTorque(world, id)));
   }
   EXPECT_NEAR(world.angularVelocity(wheel), 10.0f, 1e-3f);
   EXPECT_LE(peak, 0.5f * 1.0001f);
@@ -203,7 +204,7 @@ TEST(RevoluteJoint2D, connected_bodies_do_not_collide_and_breaks_are_reported) {
   joint.localAnchorA = {0.0f, 0.2f}; // inside the ground's top face: would push it out if colliding
   joint.localAnchorB = {0.0f, -0.3f};
   joint.breakForce = 10.0f; // the ball weighs pi 0.25 4 10 = 31.4 N
-  const JointId id = world.createJoint(joint);
+  const auto id = world.createJoint(joint);
   world.step(dt);
   EXPECT_EQ(world.contactCount(), 0U);
   ASSERT_EQ(world.jointEvents().breaks.size(), 1U);
@@ -217,7 +218,7 @@ TEST(RevoluteJoint2D, connected_bodies_do_not_collide_and_breaks_are_reported) {
     world.step(dt);
   }
   EXPECT_EQ(world.contactCount(), 1U) << "free again, the ball rests on the ground";
-  expectErrorField([&] { (void)world.revoluteAngle(id); }, "joint id");
+  expectErrorField([&] { (void)revoluteAngle(world, id); }, "joint id");
 }
 
 TEST(RevoluteJoint2D, bad_definitions_name_the_field) {
@@ -263,7 +264,7 @@ TEST(RevoluteJoint2D, joints_share_sleep_and_die_with_their_bodies) {
   joint.bodyB = b;
   joint.localAnchorA = {0.75f, 0.0f};
   joint.localAnchorB = {-0.75f, 0.0f};
-  const JointId id = world.createJoint(joint);
+  const auto id = world.createJoint(joint);
   for (int i = 0; i < 120; ++i) {
     world.step(dt);
   }
@@ -278,4 +279,11 @@ TEST(RevoluteJoint2D, joints_share_sleep_and_die_with_their_bodies) {
 }
 
 } // namespace
+
+// A joint type's functions take its typed id only: a prismatic joint's id is not a revolute's,
+// while every typed id is a JointId for what all joints have.
+static_assert(!std::is_convertible_v<PrismaticJointId, RevoluteJointId>);
+static_assert(std::is_convertible_v<PrismaticJointId, JointId>);
+static_assert(!std::is_convertible_v<JointId, RevoluteJointId>);
+
 } // namespace impetus::rigid2d

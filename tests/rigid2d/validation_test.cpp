@@ -734,32 +734,46 @@ TEST(Rigid2dValidation, joint_setters) {
     return id;
   };
   expectRejected({
-      {"motorSpeed", "nan", with(revolute, [](World& w, JointId j) { w.setRevoluteMotor(j, true, nanf, 1.0f); })},
-      {"maxMotorTorque", "-1", with(revolute, [](World& w, JointId j) { w.setRevoluteMotor(j, true, 1.0f, -1.0f); })},
-      {"lowerAngle", "1", with(revolute, [](World& w, JointId j) { w.setRevoluteLimit(j, true, 1.0f, 0.0f); })},
-      {"upperAngle", "nan", with(revolute, [](World& w, JointId j) { w.setRevoluteLimit(j, true, 0.0f, nanf); })},
-      {"motorSpeed", "inf", with(prismatic, [](World& w, JointId j) { w.setPrismaticMotor(j, true, inff, 1.0f); })},
-      {"maxMotorForce", "nan", with(prismatic, [](World& w, JointId j) { w.setPrismaticMotor(j, true, 0.0f, nanf); })},
-      {"lowerTranslation", "3", with(prismatic, [](World& w, JointId j) { w.setPrismaticLimit(j, true, 3.0f, 2.0f); })},
+      {"motorSpeed", "nan",
+       with(revolute, [](World& w, JointId j) { setRevoluteMotor(w, RevoluteJointId{j}, true, nanf, 1.0f); })},
+      {"maxMotorTorque", "-1",
+       with(revolute, [](World& w, JointId j) { setRevoluteMotor(w, RevoluteJointId{j}, true, 1.0f, -1.0f); })},
+      {"lowerAngle", "1",
+       with(revolute, [](World& w, JointId j) { setRevoluteLimit(w, RevoluteJointId{j}, true, 1.0f, 0.0f); })},
+      {"upperAngle", "nan",
+       with(revolute, [](World& w, JointId j) { setRevoluteLimit(w, RevoluteJointId{j}, true, 0.0f, nanf); })},
+      {"motorSpeed", "inf",
+       with(prismatic, [](World& w, JointId j) { setPrismaticMotor(w, PrismaticJointId{j}, true, inff, 1.0f); })},
+      {"maxMotorForce", "nan",
+       with(prismatic, [](World& w, JointId j) { setPrismaticMotor(w, PrismaticJointId{j}, true, 0.0f, nanf); })},
+      {"lowerTranslation", "3",
+       with(prismatic, [](World& w, JointId j) { setPrismaticLimit(w, PrismaticJointId{j}, true, 3.0f, 2.0f); })},
       {"upperTranslation", "-inf",
-       with(prismatic, [](World& w, JointId j) { w.setPrismaticLimit(j, true, 0.0f, -inff); })},
-      {"length", "0", with(distanceJoint, [](World& w, JointId j) { w.setDistanceJointLength(j, 0.0f); })},
-      {"length", "nan", with(distanceJoint, [](World& w, JointId j) { w.setDistanceJointLength(j, nanf); })},
-      {"motorSpeed", "nan", with(wheel, [](World& w, JointId j) { w.setWheelMotor(j, true, nanf, 1.0f); })},
-      {"maxMotorTorque", "-1", with(wheel, [](World& w, JointId j) { w.setWheelMotor(j, true, 0.0f, -1.0f); })},
+       with(prismatic, [](World& w, JointId j) { setPrismaticLimit(w, PrismaticJointId{j}, true, 0.0f, -inff); })},
+      {"length", "0",
+       with(distanceJoint, [](World& w, JointId j) { setDistanceJointLength(w, DistanceJointId{j}, 0.0f); })},
+      {"length", "nan",
+       with(distanceJoint, [](World& w, JointId j) { setDistanceJointLength(w, DistanceJointId{j}, nanf); })},
+      {"motorSpeed", "nan",
+       with(wheel, [](World& w, JointId j) { setWheelMotor(w, WheelJointId{j}, true, nanf, 1.0f); })},
+      {"maxMotorTorque", "-1",
+       with(wheel, [](World& w, JointId j) { setWheelMotor(w, WheelJointId{j}, true, 0.0f, -1.0f); })},
       {"linearOffset.y", "inf",
        with(motor,
             [](World& w, JointId j) {
-              w.setMotorJointTarget(j, {0.0f, inff}, 0.0f);
+              setMotorJointTarget(w, MotorJointId{j}, {0.0f, inff}, 0.0f);
             })},
-      {"angularOffset", "nan", with(motor, [](World& w, JointId j) { w.setMotorJointTarget(j, {}, nanf); })},
+      {"angularOffset", "nan",
+       with(motor, [](World& w, JointId j) { setMotorJointTarget(w, MotorJointId{j}, {}, nanf); })},
       {"target.x", "nan",
        with(mouse,
             [](World& w, JointId j) {
-              w.setMouseTarget(j, {nanf, 0.0f});
+              setMouseTarget(w, MouseJointId{j}, {nanf, 0.0f});
             })},
-      {"joint id", "0", with(prismatic, [](World& w, JointId j) { w.setRevoluteMotor(j, true, 0.0f, 0.0f); })},
-      {"joint id", "0", with(destroyed, [](World& w, JointId j) { w.setDistanceJointLength(j, 1.0f); })},
+      {"joint id", "0",
+       with(prismatic, [](World& w, JointId j) { setRevoluteMotor(w, RevoluteJointId{j}, true, 0.0f, 0.0f); })},
+      {"joint id", "0",
+       with(destroyed, [](World& w, JointId j) { setDistanceJointLength(w, DistanceJointId{j}, 1.0f); })},
       {"joint id", "0", with(destroyed, [](World& w, JointId j) { w.destroyJoint(j); })},
   });
 }

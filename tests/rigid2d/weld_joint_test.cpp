@@ -133,7 +133,7 @@ Beam buildBeam(World& world, int count) {
     def.bodyB = box;
     def.localAnchorA = previous == wall ? Vec2f{} : Vec2f{beamHx, 0.0f};
     def.localAnchorB = {-beamHx, 0.0f};
-    const JointId id = world.createJoint(def);
+    const auto id = world.createJoint(def);
     if (i == 0) {
       beam.root = id;
     }

@@ -25,7 +25,7 @@ struct Car {
   World world;
   BodyId ground, chassis;
   std::array<BodyId, 2> wheels;
-  std::array<JointId, 2> joints;
+  std::array<WheelJointId, 2> joints;
   std::array<WheelJointDef, 2> defs;
 
   Car(float hertz, float dampingRatio) {
@@ -99,17 +99,17 @@ TEST(WheelJoint2D, static_sag_is_half_the_chassis_weight_over_the_spring_rate) {
 TEST(WheelJoint2D, motor_drives_the_car_at_the_rolling_speed) {
   Car car(4.0f, 0.7f);
   const float maxTorque = 2.0f;
-  for (const JointId id : car.joints) {
-    car.world.setWheelMotor(id, true, -10.0f, maxTorque);
+  for (const WheelJointId id : car.joints) {
+    setWheelMotor(car.world, id, true, -10.0f, maxTorque);
   }
   float peak = 0.0f;
   for (int i = 0; i < 300; ++i) {
     car.world.step(dt);
-    for (const JointId id : car.joints) {
-      peak = std::max(peak, std::abs(car.world.wheelMotorTorque(id)));
+    for (const WheelJointId id : car.joints) {
+      peak = std::max(peak, std::abs(wheelMotorTorque(car.world, id)));
     }
     if (i == 10) {
-      EXPECT_NEAR(car.world.wheelMotorTorque(car.joints[0]), -maxTorque, 1e-3f * maxTorque);
+      EXPECT_NEAR(wheelMotorTorque(car.world, car.joints[0]), -maxTorque, 1e-3f * maxTorque);
     }
   }
   EXPECT_LE(peak, maxTorque * 1.0001f);

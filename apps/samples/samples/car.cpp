@@ -91,8 +91,8 @@ protected:
     // wheel clockwise, which rolls the car forward (+x). With no key the autopilot drives on.
     const int throttle = throttle_ != 0 ? throttle_ : (autopilot_ ? 1 : 0);
     const float speed = brake_ ? 0.0f : -static_cast<float>(throttle) * wheelSpeed_;
-    for (const rigid2d::JointId j : springs_) {
-      world().setWheelMotor(j, throttle != 0 || brake_, speed, torque_);
+    for (const rigid2d::WheelJointId j : springs_) {
+      setWheelMotor(world(), j, throttle != 0 || brake_, speed, torque_);
     }
   }
 
@@ -104,7 +104,7 @@ protected:
     const Vec2f anchor = transformPoint(xf, anchors_[0]);
     const Vec2f axis = rotate(xf.q, Vec2f{0.0f, 1.0f});
     compression_.push(dot(world().position(wheels_[0]) - anchor, axis));
-    motorTorque_.push(world().wheelMotorTorque(springs_[0]));
+    motorTorque_.push(wheelMotorTorque(world(), springs_[0]));
   }
 
   void parameters() override {
@@ -126,7 +126,7 @@ protected:
 private:
   BodyId chassis_;
   std::array<BodyId, 2> wheels_{};
-  std::array<rigid2d::JointId, 2> springs_{};
+  std::array<rigid2d::WheelJointId, 2> springs_{};
   std::array<Vec2f, 2> anchors_{};
   int throttle_ = 0;
   bool brake_ = false;

@@ -141,20 +141,20 @@ public:
 protected:
   void beforeStep(float /*dt*/) override {
     // The piston's motor reverses at each limit: a crank without a crank.
-    const float t = world().prismaticTranslation(prismatic_);
+    const float t = prismaticTranslation(world(), prismatic_);
     if (t > 2.9f || t < -1.9f) {
-      world().setPrismaticMotor(prismatic_, true, t > 0.0f ? -2.0f : 2.0f, 200.0f);
+      setPrismaticMotor(world(), prismatic_, true, t > 0.0f ? -2.0f : 2.0f, 200.0f);
     }
     // The motor joint's target circles at 1 rad/s, radius 2 m, turning as it goes.
     const float phase = time();
-    world().setMotorJointTarget(motorJoint_, Vec2f{17.0f + 2.0f * std::cos(phase), 6.0f + 2.0f * std::sin(phase)},
-                                phase);
+    setMotorJointTarget(world(), motorJoint_, Vec2f{17.0f + 2.0f * std::cos(phase), 6.0f + 2.0f * std::sin(phase)},
+                        phase);
   }
 
   void afterStep(float /*dt*/) override {
-    angle_.push(world().revoluteAngle(revolute_));
-    travel_.push(world().prismaticTranslation(prismatic_));
-    length_.push(world().distanceJointLength(spring_));
+    angle_.push(revoluteAngle(world(), revolute_));
+    travel_.push(prismaticTranslation(world(), prismatic_));
+    length_.push(distanceJointLength(world(), spring_));
   }
 
   void drawOverlay(DebugDraw& draw) override {
@@ -174,7 +174,7 @@ protected:
 
   void parameters() override {
     if (ImGui::SliderFloat("##motor", &motorSpeed_, -10.0f, 10.0f, "revolute motor %.1f rad/s")) {
-      world().setRevoluteMotor(revolute_, true, motorSpeed_, 50.0f);
+      setRevoluteMotor(world(), revolute_, true, motorSpeed_, 50.0f);
     }
     ImGui::SliderFloat("##hertz", &springHertz_, 0.2f, 5.0f, "spring %.2f Hz");
     if (ImGui::IsItemDeactivatedAfterEdit()) {
@@ -192,10 +192,10 @@ private:
   BodyId piston_;
   BodyId springBox_;
   BodyId follower_;
-  rigid2d::JointId revolute_;
-  rigid2d::JointId prismatic_;
-  rigid2d::JointId spring_;
-  rigid2d::JointId motorJoint_;
+  rigid2d::RevoluteJointId revolute_;
+  rigid2d::PrismaticJointId prismatic_;
+  rigid2d::DistanceJointId spring_;
+  rigid2d::MotorJointId motorJoint_;
   float motorSpeed_ = 2.0f;  // rad/s
   float springHertz_ = 0.8f; // Hz
   History angle_;

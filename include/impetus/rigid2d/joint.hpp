@@ -27,6 +27,26 @@ using JointId = Id<struct JointTag>;
 
 enum class JointType { revolute, prismatic, distance, weld, wheel, motor, mouse, filter };
 
+/// A joint id that knows its joint's type: what createJoint returns for each def, and what the
+/// type's own functions take (joint_functions.hpp), so that a revolute joint's motor cannot be
+/// set on a prismatic joint. It converts to JointId for what every joint has; a JointId of a
+/// known type becomes one as `RevoluteJointId{id}` (a function given the wrong type throws
+/// impetus::Error naming "joint id").
+template <JointType Type> struct TypedJointId {
+  JointId id;
+  static constexpr JointType type = Type;
+  constexpr operator JointId() const noexcept { return id; } // NOLINT(google-explicit-constructor)
+  friend constexpr bool operator==(const TypedJointId&, const TypedJointId&) noexcept = default;
+};
+using RevoluteJointId = TypedJointId<JointType::revolute>;
+using PrismaticJointId = TypedJointId<JointType::prismatic>;
+using DistanceJointId = TypedJointId<JointType::distance>;
+using WeldJointId = TypedJointId<JointType::weld>;
+using WheelJointId = TypedJointId<JointType::wheel>;
+using MotorJointId = TypedJointId<JointType::motor>;
+using MouseJointId = TypedJointId<JointType::mouse>;
+using FilterJointId = TypedJointId<JointType::filter>;
+
 /// What every joint has.
 struct JointDefBase {
   BodyId bodyA;

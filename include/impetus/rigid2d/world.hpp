@@ -120,6 +120,10 @@ private:
   std::vector<std::byte> bytes_;
 };
 
+namespace detail {
+struct WorldAccess; // src/rigid2d/world_joints.cpp
+} // namespace detail
+
 class World {
 public:
   explicit World(const WorldDef& def = {});
@@ -150,14 +154,14 @@ public:
 
   // Joints (joint.hpp). Both bodies must exist; a joint keeps both awake together and, unless
   // collideConnected, stops them colliding. Destroying a body destroys its joints.
-  JointId createJoint(const RevoluteJointDef& def);
-  JointId createJoint(const PrismaticJointDef& def);
-  JointId createJoint(const DistanceJointDef& def);
-  JointId createJoint(const WeldJointDef& def);
-  JointId createJoint(const WheelJointDef& def);
-  JointId createJoint(const MotorJointDef& def);
-  JointId createJoint(const MouseJointDef& def);
-  JointId createJoint(const FilterJointDef& def);
+  RevoluteJointId createJoint(const RevoluteJointDef& def);
+  PrismaticJointId createJoint(const PrismaticJointDef& def);
+  DistanceJointId createJoint(const DistanceJointDef& def);
+  WeldJointId createJoint(const WeldJointDef& def);
+  WheelJointId createJoint(const WheelJointDef& def);
+  MotorJointId createJoint(const MotorJointDef& def);
+  MouseJointId createJoint(const MouseJointDef& def);
+  FilterJointId createJoint(const FilterJointDef& def);
   void destroyJoint(JointId id);
   [[nodiscard]] bool isValid(JointId id) const noexcept;
   [[nodiscard]] std::size_t jointCount() const noexcept;
@@ -172,23 +176,9 @@ public:
   /// The force (N) and torque (N m) the joint applied to body B over the last step.
   [[nodiscard]] Vec2f jointReactionForce(JointId id) const;
   [[nodiscard]] float jointReactionTorque(JointId id) const;
-  /// Joint angle (angleB - angleA - referenceAngle, in (-pi, pi]) and motor torque (N m).
-  [[nodiscard]] float revoluteAngle(JointId id) const;
-  [[nodiscard]] float revoluteMotorTorque(JointId id) const;
-  void setRevoluteMotor(JointId id, bool enable, float speed, float maxTorque);
-  void setRevoluteLimit(JointId id, bool enable, float lowerAngle, float upperAngle);
-  /// Translation of anchor B from anchor A along the axis (m) and motor force (N).
-  [[nodiscard]] float prismaticTranslation(JointId id) const;
-  [[nodiscard]] float prismaticMotorForce(JointId id) const;
-  void setPrismaticMotor(JointId id, bool enable, float speed, float maxForce);
-  void setPrismaticLimit(JointId id, bool enable, float lowerTranslation, float upperTranslation);
-  /// The anchors' distance now (m); the rest length.
-  [[nodiscard]] float distanceJointLength(JointId id) const;
-  void setDistanceJointLength(JointId id, float length);
-  [[nodiscard]] float wheelMotorTorque(JointId id) const;
-  void setWheelMotor(JointId id, bool enable, float speed, float maxTorque);
-  void setMotorJointTarget(JointId id, const Vec2f& linearOffset, float angularOffset);
-  void setMouseTarget(JointId id, const Vec2f& target);
+  // Each joint type's own readouts and settings are free functions of its typed id
+  // (joint_functions.hpp, as Box2D v3's b2RevoluteJoint_*): the world's interface does not grow
+  // with the joint types.
   /// Joints whose reaction crossed their break limits in the last step.
   [[nodiscard]] const JointEvents& jointEvents() const noexcept;
 
@@ -304,6 +294,9 @@ public:
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  friend struct detail::WorldAccess; // the joint types' functions (joint_functions.hpp)
 };
 
 } // namespace impetus::rigid2d
+
+#include <impetus/rigid2d/joint_functions.hpp>
