@@ -212,16 +212,6 @@ double referenceWidth(std::span<const Vec2f> points) {
   return width;
 }
 
-/// The message of the impetus::Error `f` throws ("" if none).
-template <class F> std::string thrownMessage(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
-
 // Finding 1 (regressions/polygon_hull/wrap-point-on-edge-near-start): a point on the edge next
 // to the start vertex made the gift wrapping skip the start and wind on: 7 vertices, each of
 // three twice. The hull is the triangle, from its lowest-x vertex, counter-clockwise.

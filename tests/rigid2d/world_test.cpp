@@ -589,16 +589,6 @@ TEST(World2D, spin_is_capped_at_a_quarter_turn_a_substep_unless_the_body_allows_
 namespace impetus::rigid2d {
 namespace {
 
-/// The message of the impetus::Error that `f` throws ("" when none).
-template <class F> std::string thrownMessage(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
-
 // Ids record the world that made them: two worlds built alike hand out the same slots, and an id
 // of one passed to the other is refused by name, not taken for the other's body in that slot.
 TEST(World2D, ids_of_another_world_are_refused) {

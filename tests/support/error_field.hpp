@@ -19,6 +19,16 @@ template <class F> std::string thrownField(F&& f) {
   return "<nothing thrown>";
 }
 
+/// The message of the impetus::Error that `f` throws ("" when none).
+template <class F> std::string thrownMessage(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
 /// Expects `f` to throw an impetus::Error naming `field`.
 template <class F> void expectErrorField(F&& f, const std::string& field) {
   try {
