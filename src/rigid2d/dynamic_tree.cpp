@@ -7,6 +7,15 @@
 
 namespace impetus::rigid2d {
 
+namespace {
+
+/// The height of a node over two children of the given heights.
+template <class N> std::int16_t heightOver(const N& a, const N& b) noexcept {
+  return static_cast<std::int16_t>(1 + std::max(a.height, b.height));
+}
+
+} // namespace
+
 std::int32_t DynamicTree::allocateNode() {
   if (freeList_ == nullNode) {
     nodes_.emplace_back();
@@ -57,13 +66,102 @@ void DynamicTree::moveProxy(std::int32_t proxy, const AABB& box) {
 }
 
 void DynamicTree::enlargeProxy(std::int32_t proxy, const AABB& box) {
+  if (!isValid(box)) {
+    throwInvalid("box", std::nan(""), "AABB must be finite with lower <= upper");
+  }
   node(proxy).box = box;
   for (std::int32_t p = node(proxy).parent; p != nullNode; p = node(p).parent) {
-    if (contains(node(p).box, box)) {
-      break;
+    Node& n = node(p);
+    const bool holds = contains(n.box, box);
+    if (holds && n.enlarged) {
+      break; // marked before: so are its ancestors, and they hold its box
     }
-    node(p).box = merge(node(p).box, box);
+    if (!holds) {
+      n.box = merge(n.box, box);
+    }
+    n.enlarged = true;
   }
+}
+
+void DynamicTree::rebuild(bool full) {
+  if (root_ == nullNode || (!full && !node(root_).enlarged)) {
+    return;
+  }
+  // Gather the units (proxies, and unmarked subtrees unless full) and free the marked nodes.
+  buildUnits_.clear();
+  gatherStack_.clear();
+  gatherStack_.push_back(root_);
+  while (!gatherStack_.empty()) {
+    const std::int32_t i = gatherStack_.back();
+    gatherStack_.pop_back();
+    Node& n = node(i);
+    if (n.isLeaf() || (!n.enlarged && !full)) {
+      n.parent = nullNode;
+      buildUnits_.push_back({i, 0.5f * (n.box.lower + n.box.upper)});
+      continue;
+    }
+    gatherStack_.push_back(n.child2);
+    gatherStack_.push_back(n.child1);
+    freeNode(i);
+  }
+  root_ = buildSubtree(static_cast<std::uint32_t>(buildUnits_.size()));
+}
+
+std::int32_t DynamicTree::buildSubtree(std::uint32_t count) {
+  if (count == 1) {
+    return buildUnits_[0].node;
+  }
+  // Top down: each range of two or more units gets a node and is split in two; a range of one
+  // is that unit. Boxes and heights are filled in afterwards, children before parents.
+  builtNodes_.clear();
+  buildRanges_.clear();
+  buildRanges_.push_back({0, count, nullNode, true});
+  std::int32_t top = nullNode;
+  while (!buildRanges_.empty()) {
+    const BuildRange r = buildRanges_.back();
+    buildRanges_.pop_back();
+    std::int32_t made = nullNode;
+    if (r.end - r.begin == 1) {
+      made = buildUnits_[r.begin].node;
+    } else {
+      made = allocateNode();
+      builtNodes_.push_back(made);
+      // Split at the middle of the centres' extent along its longer axis; all on one side
+      // (coincident centres) splits the range in halves.
+      const auto first = buildUnits_.begin() + r.begin;
+      const auto last = buildUnits_.begin() + r.end;
+      Vec2f lower = first->center;
+      Vec2f upper = first->center;
+      for (auto u = first; u != last; ++u) {
+        lower = {std::min(lower.x, u->center.x), std::min(lower.y, u->center.y)};
+        upper = {std::max(upper.x, u->center.x), std::max(upper.y, u->center.y)};
+      }
+      const bool alongX = upper.x - lower.x > upper.y - lower.y;
+      const float pivot = alongX ? 0.5f * (lower.x + upper.x) : 0.5f * (lower.y + upper.y);
+      const auto middle =
+          std::partition(first, last, [&](const BuildUnit& u) { return (alongX ? u.center.x : u.center.y) < pivot; });
+      auto split = static_cast<std::uint32_t>(middle - buildUnits_.begin());
+      if (split == r.begin || split == r.end) {
+        split = r.begin + (r.end - r.begin) / 2;
+      }
+      buildRanges_.push_back({split, r.end, made, false});
+      buildRanges_.push_back({r.begin, split, made, true});
+    }
+    node(made).parent = r.parent;
+    if (r.parent == nullNode) {
+      top = made;
+    } else if (r.isChild1) {
+      node(r.parent).child1 = made;
+    } else {
+      node(r.parent).child2 = made;
+    }
+  }
+  for (auto i = builtNodes_.rbegin(); i != builtNodes_.rend(); ++i) {
+    Node& n = node(*i);
+    n.box = merge(node(n.child1).box, node(n.child2).box);
+    n.height = heightOver(node(n.child1), node(n.child2));
+  }
+  return top;
 }
 
 std::int32_t DynamicTree::findBestSibling(const AABB& box) const {
@@ -96,7 +194,7 @@ void DynamicTree::insertLeaf(std::int32_t leaf) {
   const std::int32_t newParent = allocateNode();
   node(newParent).parent = oldParent;
   node(newParent).box = merge(node(leaf).box, node(sibling).box);
-  node(newParent).height = node(sibling).height + 1;
+  node(newParent).height = static_cast<std::int16_t>(node(sibling).height + 1);
   node(newParent).child1 = sibling;
   node(newParent).child2 = leaf;
   node(sibling).parent = newParent;
@@ -111,9 +209,7 @@ void DynamicTree::insertLeaf(std::int32_t leaf) {
   // Walk back up, refitting boxes and heights and rebalancing.
   for (std::int32_t i = node(leaf).parent; i != nullNode; i = node(i).parent) {
     i = balance(i);
-    const Node& n = node(i);
-    node(i).height = 1 + std::max(node(n.child1).height, node(n.child2).height);
-    node(i).box = merge(node(n.child1).box, node(n.child2).box);
+    refit(i);
   }
 }
 
@@ -140,9 +236,7 @@ void DynamicTree::removeLeaf(std::int32_t leaf) {
   freeNode(parent);
   for (std::int32_t i = grandParent; i != nullNode; i = node(i).parent) {
     i = balance(i);
-    const Node& n = node(i);
-    node(i).box = merge(node(n.child1).box, node(n.child2).box);
-    node(i).height = 1 + std::max(node(n.child1).height, node(n.child2).height);
+    refit(i);
   }
 }
 
@@ -173,7 +267,6 @@ std::int32_t DynamicTree::balance(std::int32_t a) {
     } else {
       root_ = up;
     }
-    const std::int32_t other = upIsChild2 ? b : c;
     // Keep the taller grandchild under `up`, hand the shorter one to a.
     const bool keepF = node(f).height > node(g).height;
     const std::int32_t kept = keepF ? f : g;
@@ -185,10 +278,8 @@ std::int32_t DynamicTree::balance(std::int32_t a) {
       node(a).child1 = given;
     }
     node(given).parent = a;
-    node(a).box = merge(node(other).box, node(given).box);
-    node(a).height = 1 + std::max(node(other).height, node(given).height);
-    U.box = merge(node(a).box, node(kept).box);
-    U.height = 1 + std::max(node(a).height, node(kept).height);
+    refit(a);
+    refit(up);
     return up;
   };
   if (difference > 1) {
@@ -198,6 +289,16 @@ std::int32_t DynamicTree::balance(std::int32_t a) {
     return rotate(b, false);
   }
   return a;
+}
+
+void DynamicTree::refit(std::int32_t i) {
+  Node& n = node(i);
+  const Node& c1 = node(n.child1);
+  const Node& c2 = node(n.child2);
+  n.box = merge(c1.box, c2.box);
+  n.height = heightOver(c1, c2);
+  // A node above a marked one is marked: rebuild reaches every marked node from the root.
+  n.enlarged = n.enlarged || c1.enlarged || c2.enlarged;
 }
 
 int DynamicTree::height() const noexcept { return root_ == nullNode ? -1 : node(root_).height; }
@@ -223,9 +324,9 @@ bool DynamicTree::validateNode(std::int32_t i) const {
   }
   const Node& c1 = node(n.child1);
   const Node& c2 = node(n.child2);
-  return c1.parent == i && c2.parent == i && n.height == 1 + std::max(c1.height, c2.height) &&
-         std::abs(c1.height - c2.height) <= 1 && contains(n.box, c1.box) && contains(n.box, c2.box) &&
-         validateNode(n.child1) && validateNode(n.child2);
+  return c1.parent == i && c2.parent == i && n.height == heightOver(c1, c2) && contains(n.box, c1.box) &&
+         contains(n.box, c2.box) && (n.enlarged || (!c1.enlarged && !c2.enlarged)) && validateNode(n.child1) &&
+         validateNode(n.child2);
 }
 
 bool DynamicTree::validate() const {

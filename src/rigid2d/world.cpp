@@ -174,42 +174,78 @@ bool passesCustomFilter(const WorldState& w, std::uint64_t key) {
 }
 
 /// Finds new pairs for the shapes whose fat boxes were (re)inserted, and drops contacts whose
-/// fat boxes no longer overlap.
+/// fat boxes no longer overlap. The queries run on threads, a block of the move buffer each,
+/// and every test that needs no shape data comes first: a pair of two moved shapes is left to
+/// the query of the lower slot, and a pair that has its contact already is done.
 void updatePairs(WorldState& w) {
-  w.newPairs.clear();
-  for (std::uint32_t slot : w.moveBuffer) {
-    const Shape& s = w.shapes[slot];
-    if (!s.alive) {
-      continue;
+  w.movingTree.rebuild();
+  if (w.movedShapes.size() < w.shapes.size()) {
+    w.movedShapes.resize(w.shapes.size(), 0);
+  }
+  for (const std::uint32_t slot : w.moveBuffer) {
+    w.movedShapes[slot] = 1;
+  }
+  const auto moved = static_cast<std::uint32_t>(w.moveBuffer.size());
+  const std::uint32_t blockSize =
+      std::max(detail::minPairQueryBlock, (moved + static_cast<std::uint32_t>(detail::pairQueryBlocks) - 1) /
+                                              static_cast<std::uint32_t>(detail::pairQueryBlocks));
+  const std::uint32_t blocks = (moved + blockSize - 1) / blockSize;
+  w.parallelFor(blocks, 1, [&](std::uint32_t firstBlock, std::uint32_t endBlock) {
+    for (std::uint32_t block = firstBlock; block < endBlock; ++block) {
+      std::vector<std::uint64_t>& found = w.pairBlocks[block];
+      found.clear();
+      const std::uint32_t end = std::min(moved, (block + 1) * blockSize);
+      for (std::uint32_t k = block * blockSize; k < end; ++k) {
+        const std::uint32_t slot = w.moveBuffer[k];
+        const Shape& s = w.shapes[slot];
+        if (!s.alive) {
+          continue;
+        }
+        const auto visit = [&](std::int32_t, std::uint64_t other64) {
+          const auto other = static_cast<std::uint32_t>(other64);
+          if (other == slot || (w.movedShapes[other] != 0 && other < slot)) {
+            return true;
+          }
+          const std::uint64_t key = pairKey(slot, other);
+          if (w.contactByPair.contains(key)) {
+            return true;
+          }
+          const Shape& o = w.shapes[other];
+          if (o.body == s.body) {
+            return true;
+          }
+          const Body& ba = w.bodies[s.body];
+          const Body& bb = w.bodies[o.body];
+          // Something must be able to respond.
+          if (ba.type != BodyType::dynamicBody && bb.type != BodyType::dynamicBody) {
+            return true;
+          }
+          if (!shouldCollide(s.filter, o.filter) || w.jointBlocksCollision(s.body, o.body)) {
+            return true;
+          }
+          found.push_back(key);
+          return true;
+        };
+        w.movingTree.query(w.fatBoxes[slot], visit);
+        if (!s.inStaticTree) {
+          w.staticTree.query(w.fatBoxes[slot], visit);
+        }
+      }
     }
-    const auto visit = [&](std::int32_t, std::uint64_t other64) {
-      const auto other = static_cast<std::uint32_t>(other64);
-      const Shape& o = w.shapes[other];
-      if (other == slot || o.body == s.body) {
-        return true;
-      }
-      const Body& ba = w.bodies[s.body];
-      const Body& bb = w.bodies[o.body];
-      // Something must be able to respond.
-      if (ba.type != BodyType::dynamicBody && bb.type != BodyType::dynamicBody) {
-        return true;
-      }
-      if (!shouldCollide(s.filter, o.filter) || w.jointBlocksCollision(s.body, o.body)) {
-        return true;
-      }
-      w.newPairs.push_back(pairKey(slot, other));
-      return true;
-    };
-    w.movingTree.query(w.fatBoxes[slot], visit);
-    if (!s.inStaticTree) {
-      w.staticTree.query(w.fatBoxes[slot], visit);
-    }
+  });
+  for (const std::uint32_t slot : w.moveBuffer) {
+    w.movedShapes[slot] = 0;
   }
   w.moveBuffer.clear();
+  w.newPairs.clear();
+  for (std::uint32_t block = 0; block < blocks; ++block) {
+    w.newPairs.insert(w.newPairs.end(), w.pairBlocks[block].begin(), w.pairBlocks[block].end());
+  }
   std::sort(w.newPairs.begin(), w.newPairs.end()); // deterministic creation order
+  // A shape listed twice in the move buffer finds its pairs twice.
   w.newPairs.erase(std::unique(w.newPairs.begin(), w.newPairs.end()), w.newPairs.end());
   for (std::uint64_t key : w.newPairs) {
-    if (!w.contactByPair.contains(key) && passesCustomFilter(w, key)) {
+    if (passesCustomFilter(w, key)) {
       createContact(w, key);
     }
   }
@@ -347,7 +383,12 @@ void synchronizeShapes(WorldState& w, Body& b) {
     const AABB box = isStatic ? shapeBox(s, b.transform) : reachBox(s, b.transform);
     if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
       fatBox = enlarge(box, isStatic ? 0.0f : aabbMargin);
-      w.treeOf(s).moveProxy(s.proxy, fatBox);
+      // The moving tree is grown in place and rebuilt before the next pair update.
+      if (s.inStaticTree) {
+        w.staticTree.moveProxy(s.proxy, fatBox);
+      } else {
+        w.movingTree.enlargeProxy(s.proxy, fatBox);
+      }
       w.moveBuffer.push_back(slot);
     }
   }

@@ -190,6 +190,13 @@ struct BodySim {
 /// The solver index of a body not in this step's solve (static or asleep).
 inline constexpr std::uint32_t noSolverIndex = 0xffffffffU;
 
+/// The most blocks the pair update splits its move buffer into, each queried as one task with
+/// its own list of new pairs (more blocks than threads keeps the threads evenly loaded).
+inline constexpr std::size_t pairQueryBlocks = 32;
+/// The fewest moved shapes a block of the pair update holds: below it, a task costs more to
+/// hand out than its queries (a query is about a microsecond).
+inline constexpr std::uint32_t minPairQueryBlock = 64;
+
 /// What the contact solver reads of a body each step, packed: the Body itself is large and cold,
 /// and preparing thousands of contacts would otherwise pull two of them into the cache apiece.
 struct SolverBodyInfo {
@@ -237,7 +244,13 @@ struct WorldState {
   DynamicTree staticTree;
   DynamicTree movingTree;
   std::vector<std::uint32_t> moveBuffer; ///< shapes whose fat box was (re)inserted
-  std::vector<std::uint64_t> newPairs;   ///< scratch for the pair update
+  /// By shape slot, 1 while the pair update runs for a shape in the move buffer: a pair of two
+  /// moved shapes is recorded by the query of one of them only.
+  std::vector<std::uint8_t> movedShapes;
+  /// The pair update's new pairs: one list per block of the move buffer (blocks are queried on
+  /// threads), then all of them, sorted.
+  std::array<std::vector<std::uint64_t>, pairQueryBlocks> pairBlocks;
+  std::vector<std::uint64_t> newPairs;
 
   /// Contacts in a pool (slots reused last-in first-out, so the order is deterministic), found
   /// by their shape pair.

@@ -23,8 +23,16 @@ public:
   void destroyProxy(std::int32_t proxy);
   /// Moves a proxy to a new fat box (removal and re-insertion).
   void moveProxy(std::int32_t proxy, const AABB& box);
-  /// Grows the ancestors of a proxy whose box was enlarged in place (cheaper than a move).
+  /// Gives a proxy a new fat box in place, growing its ancestors to hold it and marking them
+  /// for `rebuild` (no removal and re-insertion: much cheaper than moveProxy when many proxies
+  /// move each step, as Box2D v3's broadphase does). Queries stay exact; the tree loosens
+  /// until rebuilt.
   void enlargeProxy(std::int32_t proxy, const AABB& box);
+  /// Rebuilds what enlargeProxy marked (all of the tree with `full`): the proxies and the
+  /// unmarked subtrees below the marked nodes are regrouped top down, each group split at the
+  /// middle of its centres along their longer extent (Box2D v3's median split). Deterministic;
+  /// allocation-free once its scratch has grown to the proxy count.
+  void rebuild(bool full = false);
 
   [[nodiscard]] const AABB& fatBox(std::int32_t proxy) const { return nodes_[static_cast<std::size_t>(proxy)].box; }
   [[nodiscard]] std::uint64_t userData(std::int32_t proxy) const {
@@ -56,8 +64,21 @@ private:
     std::int32_t parent = nullNode; ///< or the next free node
     std::int32_t child1 = nullNode;
     std::int32_t child2 = nullNode;
-    std::int32_t height = -1; ///< 0 for leaves, -1 for free nodes
+    std::int16_t height = -1; ///< 0 for leaves, -1 for free nodes
+    /// An internal node grown by enlargeProxy since the last rebuild (its parent is marked too).
+    bool enlarged = false;
     [[nodiscard]] bool isLeaf() const noexcept { return child1 == nullNode; }
+  };
+  /// What rebuild regroups: a proxy or an unmarked subtree, and its box's centre.
+  struct BuildUnit {
+    std::int32_t node;
+    Vec2f center;
+  };
+  /// A range of rebuild's units still to be split, and the node waiting for what it becomes.
+  struct BuildRange {
+    std::uint32_t begin, end;
+    std::int32_t parent;
+    bool isChild1;
   };
 
   std::int32_t allocateNode();
@@ -65,12 +86,20 @@ private:
   void insertLeaf(std::int32_t leaf);
   void removeLeaf(std::int32_t leaf);
   std::int32_t balance(std::int32_t a);
+  /// A node's box, height and mark from its children's.
+  void refit(std::int32_t i);
   std::int32_t findBestSibling(const AABB& box) const;
   Node& node(std::int32_t i) { return nodes_[static_cast<std::size_t>(i)]; }
   const Node& node(std::int32_t i) const { return nodes_[static_cast<std::size_t>(i)]; }
   bool validateNode(std::int32_t i) const;
 
+  std::int32_t buildSubtree(std::uint32_t count);
+
   std::vector<Node> nodes_;
+  std::vector<BuildUnit> buildUnits_;     ///< rebuild's scratch
+  std::vector<BuildRange> buildRanges_;   ///< rebuild's scratch
+  std::vector<std::int32_t> builtNodes_;  ///< rebuild's scratch: the internal nodes it made, parents first
+  std::vector<std::int32_t> gatherStack_; ///< rebuild's scratch
   std::int32_t root_ = nullNode;
   std::int32_t freeList_ = nullNode;
   int proxyCount_ = 0;
