@@ -6,6 +6,7 @@
 
 #include "rigid2d/world_impl.hpp"
 #include "solver/joint_parts.hpp"
+#include "solver/point_part.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/joint.hpp>
@@ -19,6 +20,7 @@ namespace impetus::rigid2d::detail {
 using solver::BlockPart;
 using solver::LimitPart;
 using solver::MotorPart;
+using PointPart = solver::PointPart<Vec2f>;
 using solver::rigidRow;
 using solver::RowPart;
 using solver::SpringPart;
@@ -90,14 +92,6 @@ struct JointFrame {
 
 /// The angle row: the relative spin wB - wA.
 [[nodiscard]] inline JointRow angleRow() { return {{}, 1.0f, 1.0f}; }
-
-/// The point constraint's rows (anchors rA, rB coincide): along x and along y.
-[[nodiscard]] inline RowPair pointRows(const Vec2f& rA, const Vec2f& rB) {
-  return {linearRow({1.0f, 0.0f}, rA, rB), linearRow({0.0f, 1.0f}, rA, rB)};
-}
-
-/// A block's two impulses as a vector (the point rows' x and y).
-[[nodiscard]] inline Vec2f asVec(const std::array<float, 2>& impulse) { return {impulse[0], impulse[1]}; }
 
 /// Writes a body's new velocities back unless it is the static state.
 inline void storeVelocity(std::vector<BodyState>& states, std::uint32_t index, std::uint32_t staticIndex,

@@ -37,7 +37,7 @@ void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<Body
                     std::uint32_t staticIndex) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
     joint.angular.warmStart(angleRow(), frame, a, b);
-    joint.linear.warmStart(pointRows(currentAnchor(a, joint.targetA), currentAnchor(b, joint.originB)), frame, a, b);
+    joint.linear.warmStart(currentAnchor(a, joint.targetA), currentAnchor(b, joint.originB), frame, a, b);
   });
 }
 
@@ -56,13 +56,12 @@ void solveJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyStat
     const Vec2f rA = currentAnchor(a, joint.targetA);
     const Vec2f rB = currentAnchor(b, joint.originB);
     const Vec2f c = anchorSeparation(frame, a, b, rA, rB); // m
-    joint.linear.solve(pointRows(rA, rB), frame, a, b, {c.x, c.y}, Softness{rate, 1.0f, 0.0f},
-                       def.maxForce * context.h);
+    joint.linear.solve(rA, rB, frame, a, b, c, Softness{rate, 1.0f, 0.0f}, def.maxForce * context.h);
   });
 }
 
 JointReaction jointReaction(const MotorJoint& joint, const JointFrame&, float inverseH) {
-  return {asVec(joint.linear.impulse) * inverseH, joint.angular.impulse * inverseH};
+  return {joint.linear.impulse * inverseH, joint.angular.impulse * inverseH};
 }
 
 } // namespace impetus::rigid2d::detail

@@ -8,9 +8,9 @@ namespace impetus::rigid2d::detail {
 
 /// A point part of bounded magnitude (the linear drive) and a motor part on the angle.
 struct MotorJoint {
-  MotorJointDef def;   ///< the settings (the offsets change at run time; the anchors are not used)
-  BlockPart<2> linear; ///< N s per substep, on B (at B's origin)
-  MotorPart angular;   ///< N m s per substep, on B
+  MotorJointDef def; ///< the settings (the offsets change at run time; the anchors are not used)
+  PointPart linear;  ///< N s per substep, on B (at B's origin)
+  MotorPart angular; ///< N m s per substep, on B
   /// From A's centre of mass to the target point (A's origin + linearOffset, a point fixed in
   /// A), world axes at the step's start, m.
   Vec2f targetA;

@@ -34,7 +34,7 @@ void warmStartJoint(MouseJoint& joint, const JointFrame& frame, std::vector<Body
                     std::uint32_t staticIndex) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
     joint.angular.warmStart(angleRow(), frame, a, b);
-    joint.linear.warmStart(pointRows({}, currentAnchor(b, frame.frameB)), frame, a, b);
+    joint.linear.warmStart({}, currentAnchor(b, frame.frameB), frame, a, b);
   });
 }
 
@@ -44,14 +44,14 @@ void solveJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyStat
     joint.angular.solve(angleRow(), frame, a, b, 0.0f, joint.angularDamping);
     const Vec2f rB = currentAnchor(b, frame.frameB);
     const Vec2f c = b.dp + rB + joint.targetOffset; // m: anchor minus target
-    joint.linear.solve(pointRows({}, rB), frame, a, b, {c.x, c.y},
+    joint.linear.solve({}, rB, frame, a, b, c,
                        joint.def.hertz > 0.0f ? joint.linearSoftness : rigidRowSoftness(frame, useBias),
                        joint.def.maxForce * context.h);
   });
 }
 
 JointReaction jointReaction(const MouseJoint& joint, const JointFrame&, float inverseH) {
-  return {asVec(joint.linear.impulse) * inverseH, joint.angular.impulse * inverseH};
+  return {joint.linear.impulse * inverseH, joint.angular.impulse * inverseH};
 }
 
 } // namespace impetus::rigid2d::detail

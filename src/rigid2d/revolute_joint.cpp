@@ -19,6 +19,12 @@ float jointAngle(const RevoluteJoint& joint, const BodyState& a, const BodyState
   return unwindAngle(joint.angleAtStart + relativeAngle(b.dq, a.dq));
 }
 
+/// What the angle row's parts hold together (N m s per substep, on B).
+float axialImpulse(const RevoluteJoint& joint) {
+  return joint.spring.impulse + joint.motor.impulse + joint.friction.impulse + joint.limit.lowerImpulse -
+         joint.limit.upperImpulse;
+}
+
 } // namespace
 
 void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepContext& context) {
@@ -34,12 +40,9 @@ void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepConte
 void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
-    const JointRow angle = angleRow();
-    joint.spring.warmStart(angle, frame, a, b);
-    joint.motor.warmStart(angle, frame, a, b);
-    joint.friction.warmStart(angle, frame, a, b);
-    joint.limit.warmStart(angle, frame, a, b);
-    joint.point.warmStart(pointRows(currentAnchor(a, frame.frameA), currentAnchor(b, frame.frameB)), frame, a, b);
+    // The angle row's parts at once: one impulse, the sum of theirs.
+    applyRow(angleRow(), frame, a, b, axialImpulse(joint));
+    joint.point.warmStart(currentAnchor(a, frame.frameA), currentAnchor(b, frame.frameB), frame, a, b);
   });
 }
 
@@ -64,14 +67,12 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
     const Vec2f rA = currentAnchor(a, frame.frameA);
     const Vec2f rB = currentAnchor(b, frame.frameB);
     const Vec2f separation = anchorSeparation(frame, a, b, rA, rB);
-    joint.point.solve(pointRows(rA, rB), frame, a, b, {separation.x, separation.y}, rigidRowSoftness(frame, useBias));
+    joint.point.solve(rA, rB, frame, a, b, separation, rigidRowSoftness(frame, useBias));
   });
 }
 
 JointReaction jointReaction(const RevoluteJoint& joint, const JointFrame&, float inverseH) {
-  const float axial = joint.spring.impulse + joint.motor.impulse + joint.friction.impulse + joint.limit.lowerImpulse -
-                      joint.limit.upperImpulse;
-  return {asVec(joint.point.impulse) * inverseH, axial * inverseH};
+  return {joint.point.impulse * inverseH, axialImpulse(joint) * inverseH};
 }
 
 } // namespace impetus::rigid2d::detail

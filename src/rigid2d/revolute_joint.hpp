@@ -9,7 +9,7 @@ namespace impetus::rigid2d::detail {
 /// A point part for the pin; spring, motor, friction and limit parts on the angle.
 struct RevoluteJoint {
   RevoluteJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
-  BlockPart<2> point;   ///< the pin, N s per substep
+  PointPart point;      ///< the pin, N s per substep
   SpringPart spring;    ///< N m s per substep
   MotorPart motor;
   MotorPart friction;

@@ -24,7 +24,7 @@ void warmStartJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyS
                     std::uint32_t staticIndex) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
     joint.angle.warmStart(angleRow(), frame, a, b);
-    joint.point.warmStart(pointRows(currentAnchor(a, frame.frameA), currentAnchor(b, frame.frameB)), frame, a, b);
+    joint.point.warmStart(currentAnchor(a, frame.frameA), currentAnchor(b, frame.frameB), frame, a, b);
   });
 }
 
@@ -38,13 +38,13 @@ void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState
     const Vec2f rA = currentAnchor(a, frame.frameA);
     const Vec2f rB = currentAnchor(b, frame.frameB);
     const Vec2f separation = anchorSeparation(frame, a, b, rA, rB);
-    joint.point.solve(pointRows(rA, rB), frame, a, b, {separation.x, separation.y},
+    joint.point.solve(rA, rB, frame, a, b, separation,
                       def.linearHertz > 0.0f ? joint.linearSoftness : rigidRowSoftness(frame, useBias));
   });
 }
 
 JointReaction jointReaction(const WeldJoint& joint, const JointFrame&, float inverseH) {
-  return {asVec(joint.point.impulse) * inverseH, joint.angle.impulse * inverseH};
+  return {joint.point.impulse * inverseH, joint.angle.impulse * inverseH};
 }
 
 } // namespace impetus::rigid2d::detail

@@ -10,7 +10,7 @@ namespace impetus::rigid2d::detail {
 struct WeldJoint {
   WeldJointDef def;        ///< the settings (anchors and axes as given)
   RowPart angle;           ///< N m s per substep
-  BlockPart<2> point;      ///< N s per substep
+  PointPart point;         ///< N s per substep
   float startAngle = 0.0f; ///< the angle error at the step's start, angleB - angleA - referenceAngle, in (-pi, pi], rad
   Softness linearSoftness; ///< linearHertz's spring (unused when rigid)
   Softness angularSoftness; ///< angularHertz's spring (unused when rigid)

@@ -5,11 +5,13 @@
 //   SpringPart a spring toward C = 0 of its own frequency and damping ratio;
 //   MotorPart  a row driven to a target speed with a bounded impulse (motors, joint friction);
 //   LimitPart  a pair of one-sided rows lower <= C <= upper;
-//   BlockPart  N coupled equality rows solved together (a point: 2 rows in 2D, 3 in 3D; a
-//              slider's line and angle), optionally with the impulse bounded in magnitude.
+//   BlockPart  N coupled equality rows solved together (a slider's line and angle), optionally
+//              with the impulse bounded in magnitude;
+//   PointPart  two anchors held together (point_part.hpp): a point's rows as one block, in the
+//              closed form of the dimension's K.
 // Every row's accumulated impulse is held within what the world's speed caps could ever ask of it
 // (maxRowImpulse), so that an unstable system outside the envelope stays finite.
-// A joint type is a short composition of these: a revolute joint is a point block, a spring, a
+// A joint type is a short composition of these: a revolute joint is a point part, a spring, a
 // motor, friction and a limit on the angle row. The accumulated impulses are per substep (N s,
 // or N m s on angle rows); the joint's force is the impulse times the substep rate.
 #pragma once
