@@ -75,6 +75,13 @@ struct JointFrame {
   return a;
 }
 
+/// An angle of any size wrapped into (-pi, pi]: the reference angles a joint is made with, once,
+/// so that the step's angle errors (a sum of at most three angles in (-pi, pi]) need only
+/// unwindAngle.
+[[nodiscard]] inline float wrapAngle(float a) {
+  return unwindAngle(static_cast<float>(std::remainder(static_cast<double>(a), 2.0 * impetus::pi<double>)));
+}
+
 /// The anchors now: the step's frames turned by each body's rotation so far this step.
 [[nodiscard]] inline Vec2f currentAnchor(const BodyState& s, const Vec2f& frame) { return rotate(s.dq, frame); }
 

@@ -29,8 +29,7 @@ void prepareJoint(MotorJoint& joint, const JointFrame& frame, const StepContext&
   const Vec2f originA = -rotate(frame.qA, frame.localCenterA);
   joint.originB = -rotate(frame.qB, frame.localCenterB);
   joint.targetA = originA + rotate(frame.qA, def.linearOffset);
-  constexpr float twoPi = 2.0f * pi<float>;
-  joint.angleError = std::remainder(frame.deltaAngle - def.angularOffset, twoPi);
+  joint.angleError = unwindAngle(frame.deltaAngle - def.angularOffset);
 }
 
 void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

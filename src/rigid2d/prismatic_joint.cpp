@@ -31,8 +31,7 @@ RowPair blockRows(const SliderGeometry& g) { return {g.normalRow(), angleRow()};
 
 std::array<float, 2> blockError(const PrismaticJoint& joint, const JointFrame& f, const SliderGeometry& g,
                                 const BodyState& a, const BodyState& b) {
-  constexpr float twoPi = 2.0f * pi<float>;
-  const float angleError = std::remainder(f.deltaAngle + relativeAngle(b.dq, a.dq) - joint.def.referenceAngle, twoPi);
+  const float angleError = unwindAngle(f.deltaAngle + relativeAngle(b.dq, a.dq) - joint.def.referenceAngle);
   return {dot(g.normal, g.d), angleError};
 }
 

@@ -28,8 +28,7 @@ float axialImpulse(const RevoluteJoint& joint) {
 } // namespace
 
 void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepContext& context) {
-  joint.angleAtStart = static_cast<float>(
-      std::remainder(static_cast<double>(frame.deltaAngle) - joint.def.referenceAngle, 2.0 * pi<double>));
+  joint.angleAtStart = unwindAngle(frame.deltaAngle - joint.def.referenceAngle);
   joint.spring.prepare(joint.def.enableSpring ? joint.def.hertz : 0.0f, joint.def.dampingRatio, context.h);
   clearSwitchedOffImpulses(joint);
   if (joint.def.frictionTorque == 0.0f) {

@@ -14,8 +14,7 @@
 namespace impetus::rigid2d::detail {
 
 void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& context) {
-  constexpr float twoPi = 2.0f * pi<float>;
-  joint.startAngle = unwindAngle(std::remainder(frame.deltaAngle - joint.def.referenceAngle, twoPi));
+  joint.startAngle = unwindAngle(frame.deltaAngle - joint.def.referenceAngle);
   joint.linearSoftness = makeSoft(joint.def.linearHertz, joint.def.linearDampingRatio, context.h);
   joint.angularSoftness = makeSoft(joint.def.angularHertz, joint.def.angularDampingRatio, context.h);
 }

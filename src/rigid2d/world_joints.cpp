@@ -194,6 +194,7 @@ RevoluteJointId World::createJoint(const RevoluteJointDef& def) {
   validateSpring(def.hertz, def.dampingRatio);
   detail::RevoluteJoint j;
   j.def = def;
+  j.def.referenceAngle = detail::wrapAngle(def.referenceAngle);
   return {addJoint(*impl_, def, j)};
 }
 
@@ -207,6 +208,7 @@ PrismaticJointId World::createJoint(const PrismaticJointDef& def) {
   validateSpring(def.hertz, def.dampingRatio);
   detail::PrismaticJoint j;
   j.def = def;
+  j.def.referenceAngle = detail::wrapAngle(def.referenceAngle);
   j.def.localAxisA = unitAxis(def.localAxisA);
   return {addJoint(*impl_, def, j)};
 }
@@ -235,6 +237,7 @@ WeldJointId World::createJoint(const WeldJointDef& def) {
   requireNonNegative(def.angularDampingRatio, "angularDampingRatio");
   detail::WeldJoint j;
   j.def = def;
+  j.def.referenceAngle = detail::wrapAngle(def.referenceAngle);
   return {addJoint(*impl_, def, j)};
 }
 
@@ -261,6 +264,7 @@ MotorJointId World::createJoint(const MotorJointDef& def) {
   }
   detail::MotorJoint j;
   j.def = def;
+  j.def.angularOffset = detail::wrapAngle(def.angularOffset);
   return {addJoint(*impl_, def, j)};
 }
 
@@ -445,7 +449,7 @@ void setMotorJointTarget(World& world, MotorJointId joint, const Vec2f& linearOf
   requireFinite(angularOffset, "angularOffset");
   auto& m = jointData<detail::MotorJoint>(w, id, "motor");
   m.def.linearOffset = linearOffset;
-  m.def.angularOffset = angularOffset;
+  m.def.angularOffset = detail::wrapAngle(angularOffset);
 }
 
 void setMouseTarget(World& world, MouseJointId joint, const Vec2f& target) {
