@@ -413,24 +413,26 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
   d.colourStart[colourCount] = batches;
   d.wide.resize(batches * kernels.batchBytes / sizeof(WideBlock) + 1);
   d.slots.resize(std::size_t{batches} * width);
+  // The batches' contact slots, colour after colour (noContact fills a colour's last batch) ...
   for (std::size_t colour = 0; colour < colourCount; ++colour) {
     const std::vector<std::uint32_t>& list = d.colourContacts[colour];
-    const std::uint32_t first = d.colourStart[colour];
-    w.parallelFor(d.colourStart[colour + 1] - first, 64, [&](std::uint32_t begin, std::uint32_t end) {
-      for (std::uint32_t batch = begin; batch < end; ++batch) {
-        const std::size_t k0 = std::size_t{batch} * width;
-        const int count = static_cast<int>(std::min<std::size_t>(width, list.size() - k0));
-        if (const std::size_t ahead = k0 + prefetchDistance * width; ahead < list.size()) {
-          prefetchContacts(w, list.data() + ahead, std::min<std::size_t>(width, list.size() - ahead));
-        }
-        std::uint32_t* slots = &d.slots[(std::size_t{first} + batch) * width];
-        for (std::uint32_t i = 0; i < width; ++i) {
-          slots[i] = static_cast<int>(i) < count ? list[k0 + i] : noContact;
-        }
-        kernels.prepare(d.batches(), first + batch, w, slots, count, d.soft, d.staticSoft);
-      }
-    });
+    std::uint32_t* slots = &d.slots[std::size_t{d.colourStart[colour]} * width];
+    const std::size_t filled = std::size_t{d.colourStart[colour + 1] - d.colourStart[colour]} * width;
+    std::copy(list.begin(), list.end(), slots);
+    std::fill(slots + list.size(), slots + filled, noContact);
   }
+  // ... then every batch prepared at once, on threads: a batch writes only its own lanes and
+  // its own contacts, whatever its colour.
+  w.parallelFor(batches, 16, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t batch = begin; batch < end; ++batch) {
+      const std::uint32_t* slots = &d.slots[std::size_t{batch} * width];
+      if (batch + prefetchDistance < batches) {
+        prefetchContacts(w, slots + std::size_t{prefetchDistance} * width, width);
+      }
+      const auto count = static_cast<int>(std::find(slots, slots + width, noContact) - slots);
+      kernels.prepare(d.batches(), batch, w, slots, count, d.soft, d.staticSoft);
+    }
+  });
 }
 
 void warmStartConstraints(WorldState& w) {
