@@ -281,6 +281,10 @@ constexpr std::uint32_t prefetchDistance = 2;
 /// microsecond).
 constexpr std::uint32_t minJointsPerTask = 64;
 
+/// The fewest contact batches worth a task of their own in the prepare (a batch of 4 or 8
+/// contacts takes about half a microsecond to gather and prepare).
+constexpr std::uint32_t minPrepareBatchesPerTask = 16;
+
 /// Runs a stage over the constraint graph: the overflow joints and contacts first, in order
 /// (`jointOne(slot)`, `overflowOne(constraint)`), then colour after colour the colour's joints
 /// (`jointOne`, ranges in parallel) and its contact batches (`perRange(begin, end)`, ranges in
@@ -423,7 +427,7 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
   }
   // ... then every batch prepared at once, on threads: a batch writes only its own lanes and
   // its own contacts, whatever its colour.
-  w.parallelFor(batches, 16, [&](std::uint32_t begin, std::uint32_t end) {
+  w.parallelFor(batches, minPrepareBatchesPerTask, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t batch = begin; batch < end; ++batch) {
       const std::uint32_t* slots = &d.slots[std::size_t{batch} * width];
       if (batch + prefetchDistance < batches) {

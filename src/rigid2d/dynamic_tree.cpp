@@ -14,6 +14,13 @@ template <class N> std::int16_t heightOver(const N& a, const N& b) noexcept {
   return static_cast<std::int16_t>(1 + std::max(a.height, b.height));
 }
 
+/// Refuses, naming `box`, a box that is not finite or is inside out.
+void requireValidBox(const AABB& box) {
+  if (!isValid(box)) {
+    throwInvalid("box", std::nan(""), "AABB must be finite with lower <= upper");
+  }
+}
+
 } // namespace
 
 std::int32_t DynamicTree::allocateNode() {
@@ -34,9 +41,7 @@ void DynamicTree::freeNode(std::int32_t i) {
 }
 
 std::int32_t DynamicTree::createProxy(const AABB& box, std::uint64_t userData) {
-  if (!isValid(box)) {
-    throwInvalid("box", std::nan(""), "AABB must be finite with lower <= upper");
-  }
+  requireValidBox(box);
   const std::int32_t leaf = allocateNode();
   node(leaf).box = box;
   node(leaf).userData = userData;
@@ -57,18 +62,14 @@ void DynamicTree::destroyProxy(std::int32_t proxy) {
 }
 
 void DynamicTree::moveProxy(std::int32_t proxy, const AABB& box) {
-  if (!isValid(box)) {
-    throwInvalid("box", std::nan(""), "AABB must be finite with lower <= upper");
-  }
+  requireValidBox(box);
   removeLeaf(proxy);
   node(proxy).box = box;
   insertLeaf(proxy);
 }
 
 void DynamicTree::enlargeProxy(std::int32_t proxy, const AABB& box) {
-  if (!isValid(box)) {
-    throwInvalid("box", std::nan(""), "AABB must be finite with lower <= upper");
-  }
+  requireValidBox(box);
   node(proxy).box = box;
   for (std::int32_t p = node(proxy).parent; p != nullNode; p = node(p).parent) {
     Node& n = node(p);
@@ -168,8 +169,8 @@ std::int32_t DynamicTree::findBestSibling(const AABB& box) const {
   // Greedy descent to a leaf with the surface area heuristic (perimeter in 2D), O(log n): at
   // each internal node, go to the child where the new box adds the least perimeter (for a leaf
   // child, the perimeter of the parent it would share with the new box; for an internal child,
-  // the growth of its box). Always ending at a leaf keeps the AVL rotations of insertLeaf able to
-  // restore balance (making a tall internal node the sibling could not be fixed by one rotation).
+  // the growth of its box). Always ending at a leaf keeps the rotations of insertLeaf able to
+  // balance the path (making a tall internal node the sibling could not be fixed by one rotation).
   std::int32_t index = root_;
   while (!node(index).isLeaf()) {
     const Node& n = node(index);

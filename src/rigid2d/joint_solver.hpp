@@ -75,7 +75,7 @@ struct JointFrame {
   return a;
 }
 
-/// An angle of any size wrapped into (-pi, pi]: the reference angles a joint is made with, once,
+/// An angle of any size wrapped into [-pi, pi]: the reference angles a joint is made with, once,
 /// so that the step's angle errors (a sum of at most three angles in (-pi, pi]) need only
 /// unwindAngle.
 [[nodiscard]] inline float wrapAngle(float a) {

@@ -173,10 +173,10 @@ bool passesCustomFilter(const WorldState& w, std::uint64_t key) {
   return !(a.customFiltering || b.customFiltering) || !w.customFilter || w.customFilter(a.id, b.id);
 }
 
-/// Finds new pairs for the shapes whose fat boxes were (re)inserted, and drops contacts whose
-/// fat boxes no longer overlap. The queries run on threads, a block of the move buffer each,
-/// and every test that needs no shape data comes first: a pair of two moved shapes is left to
-/// the query of the lower slot, and a pair that has its contact already is done.
+/// Finds new pairs for the shapes whose fat boxes changed and makes their contacts (contacts
+/// whose fat boxes no longer overlap end in collideContacts). The queries run on threads, a block of the move buffer
+/// each, and every test that needs no shape data comes first: a pair of two moved shapes is left to the query of the
+/// lower slot, and a pair that has its contact already is done.
 void updatePairs(WorldState& w) {
   w.movingTree.rebuild();
   if (w.movedShapes.size() < w.shapes.size()) {
@@ -187,8 +187,7 @@ void updatePairs(WorldState& w) {
   }
   const auto moved = static_cast<std::uint32_t>(w.moveBuffer.size());
   const std::uint32_t blockSize =
-      std::max(detail::minPairQueryBlock, (moved + static_cast<std::uint32_t>(detail::pairQueryBlocks) - 1) /
-                                              static_cast<std::uint32_t>(detail::pairQueryBlocks));
+      std::max(detail::minPairQueryBlock, (moved + detail::pairQueryBlocks - 1) / detail::pairQueryBlocks);
   const std::uint32_t blocks = (moved + blockSize - 1) / blockSize;
   w.parallelFor(blocks, 1, [&](std::uint32_t firstBlock, std::uint32_t endBlock) {
     for (std::uint32_t block = firstBlock; block < endBlock; ++block) {
@@ -519,6 +518,9 @@ void World::step(float dt) {
     detail::sweepBullet(w, b, bullet.center, bullet.rotation);
     synchronizeShapes(w, b);
   }
+  // The moving tree tight again for the game's queries between steps (and for the next pair
+  // update, which rebuilds only what the game moved since).
+  w.movingTree.rebuild();
   if (w.def.enableSleep) {
     detail::updateSleep(w, dt);
   }

@@ -192,7 +192,7 @@ inline constexpr std::uint32_t noSolverIndex = 0xffffffffU;
 
 /// The most blocks the pair update splits its move buffer into, each queried as one task with
 /// its own list of new pairs (more blocks than threads keeps the threads evenly loaded).
-inline constexpr std::size_t pairQueryBlocks = 32;
+inline constexpr std::uint32_t pairQueryBlocks = 32;
 /// The fewest moved shapes a block of the pair update holds: below it, a task costs more to
 /// hand out than its queries (a query is about a microsecond).
 inline constexpr std::uint32_t minPairQueryBlock = 64;
@@ -243,7 +243,7 @@ struct WorldState {
   /// against itself and continuous collision searches static shapes only.
   DynamicTree staticTree;
   DynamicTree movingTree;
-  std::vector<std::uint32_t> moveBuffer; ///< shapes whose fat box was (re)inserted
+  std::vector<std::uint32_t> moveBuffer; ///< shapes whose fat box changed since the last pair update
   /// By shape slot, 1 while the pair update runs for a shape in the move buffer: a pair of two
   /// moved shapes is recorded by the query of one of them only.
   std::vector<std::uint8_t> movedShapes;

@@ -340,8 +340,9 @@ float revoluteAngle(const World& world, RevoluteJointId joint) {
   const JointId id = joint.id;
   const auto& r = jointData<detail::RevoluteJoint>(w, id, "revolute");
   const Joint& j = w.joint(id);
-  const double angle = detail::relativeAngle(w.bodies[j.bodyB].transform.q, w.bodies[j.bodyA].transform.q);
-  return static_cast<float>(std::remainder(angle - r.def.referenceAngle, 2.0 * pi<double>));
+  // Both in (-pi, pi] (the reference wrapped when the joint was made): one unwind suffices.
+  return detail::unwindAngle(detail::relativeAngle(w.bodies[j.bodyB].transform.q, w.bodies[j.bodyA].transform.q) -
+                             r.def.referenceAngle);
 }
 
 float revoluteMotorTorque(const World& world, RevoluteJointId joint) {

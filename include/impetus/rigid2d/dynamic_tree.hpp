@@ -1,8 +1,9 @@
 // A dynamic AABB tree: the broadphase. Leaves hold fattened boxes of shapes (proxies); internal
 // nodes hold the union of their children. Insertion picks the sibling that least increases the
-// total perimeter (the surface-area heuristic, searched by branch and bound), and rotations keep
-// the tree balanced. A proxy whose tight box leaves its fat box is re-inserted; one that moves
-// within it costs nothing.
+// total perimeter (the surface-area heuristic) and rotations keep the inserted path balanced. A
+// proxy whose tight box leaves its fat box is re-inserted (moveProxy: the static tree) or grown
+// in place and the grown part rebuilt by a median split (enlargeProxy and rebuild: the moving
+// tree, whose proxies move every step); one that moves within its fat box costs nothing.
 #pragma once
 
 #include <impetus/rigid2d/aabb.hpp>
