@@ -420,7 +420,8 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
   // The batches' contact slots, colour after colour (noContact fills a colour's last batch) ...
   for (std::size_t colour = 0; colour < colourCount; ++colour) {
     const std::vector<std::uint32_t>& list = d.colourContacts[colour];
-    std::uint32_t* slots = &d.slots[std::size_t{d.colourStart[colour]} * width];
+    // By pointer, not by index: an empty colour's start may be the end of the slots.
+    std::uint32_t* slots = d.slots.data() + std::size_t{d.colourStart[colour]} * width;
     const std::size_t filled = std::size_t{d.colourStart[colour + 1] - d.colourStart[colour]} * width;
     std::copy(list.begin(), list.end(), slots);
     std::fill(slots + list.size(), slots + filled, noContact);
