@@ -34,6 +34,22 @@ struct Fixture {
     return hits;
   }
 
+  /// Removes proxy i unless it is gone already.
+  void destroy(std::size_t i) {
+    if (proxies[i] >= 0) {
+      tree.destroyProxy(proxies[i]);
+      proxies[i] = -1;
+    }
+  }
+
+  /// `count` random queries, each against brute force.
+  void expectQueriesMatchBruteForce(int count) {
+    for (int q = 0; q < count; ++q) {
+      const AABB box = enlarge(randomBox(), 5.0f);
+      EXPECT_EQ(query(box), bruteForce(box));
+    }
+  }
+
   std::vector<std::uint64_t> bruteForce(const AABB& box) const {
     std::vector<std::uint64_t> hits;
     for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -62,16 +78,10 @@ TEST(DynamicTree, queries_match_brute_force_through_inserts_moves_and_removals) 
       }
     }
     for (std::size_t i = static_cast<std::size_t>(round); i < f.boxes.size(); i += 7) {
-      if (f.proxies[i] >= 0) {
-        f.tree.destroyProxy(f.proxies[i]);
-        f.proxies[i] = -1;
-      }
+      f.destroy(i);
     }
     ASSERT_TRUE(f.tree.validate());
-    for (int q = 0; q < 50; ++q) {
-      const AABB box = enlarge(f.randomBox(), 5.0f);
-      EXPECT_EQ(f.query(box), f.bruteForce(box));
-    }
+    f.expectQueriesMatchBruteForce(50);
   }
 }
 
@@ -179,25 +189,15 @@ TEST(DynamicTree, enlarged_in_place_and_rebuilt_it_stays_exact_and_shallow) {
     // Inserts and removals while parts of the tree are marked keep it valid.
     f.boxes.push_back(f.randomBox());
     f.proxies.push_back(f.tree.createProxy(f.boxes.back(), f.boxes.size() - 1));
-    const std::size_t doomed = static_cast<std::size_t>(round) * 97;
-    if (f.proxies[doomed] >= 0) {
-      f.tree.destroyProxy(f.proxies[doomed]);
-      f.proxies[doomed] = -1;
-    }
+    f.destroy(static_cast<std::size_t>(round) * 97);
     ASSERT_TRUE(f.tree.validate());
-    for (int q = 0; q < 20; ++q) {
-      const AABB box = enlarge(f.randomBox(), 5.0f);
-      EXPECT_EQ(f.query(box), f.bruteForce(box));
-    }
+    f.expectQueriesMatchBruteForce(20);
     f.tree.rebuild(round == 5);
     ASSERT_TRUE(f.tree.validate());
     EXPECT_EQ(f.tree.proxyCount(), static_cast<int>(std::count_if(f.proxies.begin(), f.proxies.end(),
                                                                   [](std::int32_t p) { return p >= 0; })));
     EXPECT_LE(f.tree.height(), 20) << "round " << round;
-    for (int q = 0; q < 20; ++q) {
-      const AABB box = enlarge(f.randomBox(), 5.0f);
-      EXPECT_EQ(f.query(box), f.bruteForce(box));
-    }
+    f.expectQueriesMatchBruteForce(20);
   }
   // A full median-split build packs the boxes no worse than the incremental one did: the sum of
   // internal perimeters over the root's (the SAH cost) within 10% of an incremental tree's.
