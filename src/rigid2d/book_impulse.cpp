@@ -50,6 +50,7 @@ Vec2f toFloat(const Vec2d& v) { return {static_cast<float>(v.x), static_cast<flo
 
 void solveBookImpulse(WorldState& w, float dt) {
   const StepContext context = makeStepContext(w, dt, 1);
+  returnJointSims(w); // the soft step's copies, if it ran before, hold the joints' data
   buildSolverBodies(w);
   integrateVelocities(w, context);
   // Joints (the book has none: they are the soft step's, solved once per frame here).

@@ -24,6 +24,8 @@ namespace impetus::rigid2d::detail {
 namespace {
 
 constexpr int colourCount = 24;
+/// A joint without a solver copy, in ContactSolverData::simOfJoint.
+constexpr std::uint32_t noJointSim = ~std::uint32_t{0};
 /// Contacts between two moving bodies use colours [0, dynamicColourCount); contacts with a static
 /// body, which take up one body only, may use any colour, so the last ones stay free for them.
 /// (Box2D v3 keeps static contacts out of colour 0; here that delayed the ground's support of a
@@ -50,9 +52,16 @@ struct ContactSolverData {
   std::array<std::vector<std::uint32_t>, colourCount> colourContacts;
   std::array<std::vector<std::uint32_t>, colourCount> colourJoints; ///< joint slots, in slot order
   std::vector<std::uint32_t> overflowJoints;
-  /// The joints solved this step: the overflow's, then colour by colour (jointColourStart).
+  /// The joints solved this step: the overflow's, then colour by colour (jointColourStart). Kept
+  /// from step to step while the joints and moving bodies they were coloured for stay the same.
   std::vector<JointSim> jointSims;
   std::array<std::uint32_t, colourCount + 1> jointColourStart{};
+  std::vector<std::uint32_t> simOfJoint;       ///< by joint slot: its index in jointSims, or noJointSim
+  std::vector<std::uint32_t> colouredJoints;   ///< the solvedJoints the joint colours were made for
+  std::vector<std::uint32_t> colouredBodies;   ///< ... and the awakeBodies
+  std::vector<std::uint32_t> jointBodyColours; ///< per solver body: the joints' colours (bodyColours' start)
+  std::vector<std::uint8_t> jointBreaks;       ///< by jointSims index: a break event is due
+  bool jointColoursValid = false;              ///< the copies match colouredJoints (no joint destroyed since)
   Softness soft, staticSoft;
   float pushSpeed = 0.0f;
   float restitutionThreshold = 0.0f;
@@ -312,11 +321,18 @@ void forEachColour(WorldState& w, JointOne&& jointOne, PerRange&& perRange, PerO
   }
 }
 
-/// Puts the joints prepared this step into the graph's colours, before the contacts (joints hold
-/// structures together: a colour of their own is worth more to them); a joint with no rows (a
-/// filter joint) takes none.
+/// Colours this step's joints (WorldState::solvedJoints) in the graph, before the contacts (joints
+/// hold structures together: a colour of their own is worth more to them), and makes their
+/// solver copies in colour order. A joint with no rows (a filter joint) takes none. Done again
+/// only when the joints or the moving bodies changed (the same colouring would come out);
+/// otherwise the copies, impulses and settings in them, stay where they are.
 void colourJoints(WorldState& w, ContactSolverData& d) {
   const std::uint32_t staticIndex = w.staticIndex();
+  if (d.jointColoursValid && d.colouredJoints == w.solvedJoints && d.colouredBodies == w.awakeBodies) {
+    d.bodyColours = d.jointBodyColours;
+    return;
+  }
+  returnJointSims(w);
   for (std::vector<std::uint32_t>& list : d.colourJoints) {
     list.clear();
   }
@@ -326,8 +342,7 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
     if (joint.type() == JointType::filter) {
       continue;
     }
-    const std::uint32_t ia = joint.frame.indexA;
-    const std::uint32_t ib = joint.frame.indexB;
+    const auto [ia, ib] = jointSolverIndices(w, joint);
     const bool withStatic = ia == staticIndex || ib == staticIndex;
     const int colour = findColour(d, ia, ib, staticIndex, withStatic ? allColours : dynamicColours);
     if (colour < 0) {
@@ -342,16 +357,16 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
     count += list.size();
   }
   d.jointSims.resize(count);
+  d.simOfJoint.resize(w.joints.size(), noJointSim);
   std::uint32_t at = 0;
   const auto copy = [&](const std::vector<std::uint32_t>& list) {
     w.parallelFor(static_cast<std::uint32_t>(list.size()), minJointsPerTask,
                   [&](std::uint32_t begin, std::uint32_t end) {
                     for (std::uint32_t k = begin; k < end; ++k) {
-                      const Joint& joint = w.joints[list[k]];
                       JointSim& sim = d.jointSims[at + k];
-                      sim.data = joint.data;
-                      sim.frame = joint.frame;
+                      sim.data = w.joints[list[k]].data;
                       sim.slot = list[k];
+                      d.simOfJoint[list[k]] = at + k;
                     }
                   });
     at += static_cast<std::uint32_t>(list.size());
@@ -362,16 +377,35 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
     copy(d.colourJoints[c]);
   }
   d.jointColourStart[colourCount] = at;
+  d.colouredJoints.assign(w.solvedJoints.begin(), w.solvedJoints.end());
+  d.colouredBodies.assign(w.awakeBodies.begin(), w.awakeBodies.end());
+  d.jointBodyColours = d.bodyColours;
+  d.jointColoursValid = true;
+}
+
+/// Each joint copy's frame for this step and its type's prepare, on threads.
+void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& context) {
+  w.parallelFor(static_cast<std::uint32_t>(d.jointSims.size()), minJointsPerTask,
+                [&](std::uint32_t begin, std::uint32_t end) {
+                  for (std::uint32_t k = begin; k < end; ++k) {
+                    JointSim& sim = d.jointSims[k];
+                    prepareJoint(w, w.joints[sim.slot], sim.data, sim.frame, context);
+                  }
+                });
 }
 
 } // namespace
 
-void prepareConstraints(WorldState& w, const StepContext& context) {
+ContactSolverData& contactSolverOf(WorldState& w) {
   if (!w.contactSolver) {
     w.contactSolver = std::make_unique<ContactSolverData>();
     w.contactSolver->kernels = &selectWideKernels(w.def.simd);
   }
-  ContactSolverData& d = *w.contactSolver;
+  return *w.contactSolver;
+}
+
+void prepareConstraints(WorldState& w, const StepContext& context) {
+  ContactSolverData& d = contactSolverOf(w);
   const WideKernels& kernels = *d.kernels;
   // Stiffer than a quarter of the substep rate cannot be resolved by the substeps.
   const float hertz = std::min(w.def.contactHertz, 0.25f * context.inverseH);
@@ -382,8 +416,10 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
 
   // Colour the joints, then the awake set's touching contacts, in slot order.
   const std::uint32_t staticIndex = w.staticIndex();
+  collectSolvedJoints(w);
   d.bodyColours.assign(staticIndex, 0);
   colourJoints(w, d);
+  prepareJointSims(w, d, context);
   for (std::vector<std::uint32_t>& list : d.colourContacts) {
     list.clear();
   }
@@ -497,14 +533,6 @@ void applyRestitution(WorldState& w) {
 
 void storeImpulses(WorldState& w) {
   ContactSolverData& d = *w.contactSolver;
-  // The joints' parts, impulses and all, back to their slots (what the reactions and the next
-  // step's warm start read).
-  w.parallelFor(static_cast<std::uint32_t>(d.jointSims.size()), minJointsPerTask,
-                [&](std::uint32_t begin, std::uint32_t end) {
-                  for (std::uint32_t k = begin; k < end; ++k) {
-                    w.joints[d.jointSims[k].slot].data = d.jointSims[k].data;
-                  }
-                });
   const float hitThreshold = w.def.hitEventThreshold;
   for (const ContactConstraint& c : d.overflow) {
     Contact& contact = w.contacts[c.contact];
@@ -527,6 +555,79 @@ void storeImpulses(WorldState& w) {
                        hitThreshold);
     }
   });
+}
+
+void finishJointSims(WorldState& w, const StepContext& context) {
+  w.lastInverseH = context.inverseH;
+  ContactSolverData& d = *w.contactSolver;
+  const auto count = static_cast<std::uint32_t>(d.jointSims.size());
+  d.jointBreaks.resize(count);
+  w.parallelFor(count, minJointsPerTask, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const JointSim& sim = d.jointSims[k];
+      d.jointBreaks[k] = updateReaction(w.joints[sim.slot], sim.data, sim.frame, context.inverseH) ? 1 : 0;
+    }
+  });
+  // Break events in joint slot order, as the game would list its joints (a rare event: the
+  // sort sees a few).
+  const std::size_t first = w.jointEvents.breaks.size();
+  for (std::uint32_t k = 0; k < count; ++k) {
+    if (d.jointBreaks[k] != 0) {
+      raiseBreak(w, w.joints[d.jointSims[k].slot]);
+    }
+  }
+  std::sort(w.jointEvents.breaks.begin() + static_cast<std::ptrdiff_t>(first), w.jointEvents.breaks.end(),
+            [](const JointBreakEvent& a, const JointBreakEvent& b) { return a.joint.index < b.joint.index; });
+}
+
+JointData& jointDataOf(WorldState& w, std::uint32_t slot) {
+  if (w.contactSolver && slot < w.contactSolver->simOfJoint.size()) {
+    if (const std::uint32_t k = w.contactSolver->simOfJoint[slot]; k != noJointSim) {
+      return w.contactSolver->jointSims[k].data;
+    }
+  }
+  return w.joints[slot].data;
+}
+
+const JointData& jointDataOf(const WorldState& w, std::uint32_t slot) {
+  return jointDataOf(const_cast<WorldState&>(w), slot);
+}
+
+void forgetJointSim(WorldState& w, std::uint32_t slot) {
+  if (w.contactSolver && slot < w.contactSolver->simOfJoint.size()) {
+    if (std::uint32_t& k = w.contactSolver->simOfJoint[slot]; k != noJointSim) {
+      w.contactSolver->jointSims[k].slot = noJointSim;
+      k = noJointSim;
+      // Coloured again next step, even if a new joint in this slot makes the same list.
+      w.contactSolver->jointColoursValid = false;
+    }
+  }
+}
+
+void returnJointSims(WorldState& w) {
+  if (!w.contactSolver) {
+    return;
+  }
+  ContactSolverData& d = *w.contactSolver;
+  for (const JointSim& sim : d.jointSims) {
+    if (sim.slot != noJointSim) {
+      w.joints[sim.slot].data = sim.data;
+      d.simOfJoint[sim.slot] = noJointSim;
+    }
+  }
+  dropJointSims(w);
+}
+
+void dropJointSims(WorldState& w) {
+  if (!w.contactSolver) {
+    return;
+  }
+  ContactSolverData& d = *w.contactSolver;
+  d.jointSims.clear();
+  std::fill(d.simOfJoint.begin(), d.simOfJoint.end(), noJointSim);
+  d.colouredJoints.clear();
+  d.colouredBodies.clear();
+  d.jointColoursValid = false;
 }
 
 ConstraintGraphCounts constraintGraph(const WorldState& w) {

@@ -6,59 +6,76 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <type_traits>
 
 namespace impetus::rigid2d::detail {
 
-void prepareJoints(WorldState& w, const StepContext& context) {
-  const std::uint32_t staticIndex = w.staticIndex();
+void collectSolvedJoints(WorldState& w) {
   w.awakeJointSet.compact();
   w.solvedJoints.clear();
   for (const std::uint32_t slot : w.awakeJointSet.items()) {
+    const Joint& joint = w.joints[slot];
+    if (w.bodies[joint.bodyA].moving() || w.bodies[joint.bodyB].moving()) {
+      w.solvedJoints.push_back(slot);
+    } // else asleep or static (a sleeper joined to a moving body is woken before the solve)
+  }
+}
+
+std::pair<std::uint32_t, std::uint32_t> jointSolverIndices(const WorldState& w, const Joint& joint) {
+  const Body& a = w.bodies[joint.bodyA];
+  const Body& b = w.bodies[joint.bodyB];
+  // A joint to the world (the mouse joint: bodyA is bodyB) sees a static body A.
+  const bool aMoves = a.moving() && joint.bodyA != joint.bodyB;
+  return {aMoves ? a.solverIndex : w.staticIndex(), b.moving() ? b.solverIndex : w.staticIndex()};
+}
+
+void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, JointFrame& f, const StepContext& context) {
+  const Body& a = w.bodies[joint.bodyA];
+  const Body& b = w.bodies[joint.bodyB];
+  const std::uint32_t staticIndex = w.staticIndex();
+  std::tie(f.indexA, f.indexB) = jointSolverIndices(w, joint);
+  const bool aMoves = f.indexA != staticIndex;
+  const bool bMoves = f.indexB != staticIndex;
+  f.mA = aMoves ? a.inverseMass : 0.0f;
+  f.mB = bMoves ? b.inverseMass : 0.0f;
+  f.iA = aMoves ? a.inverseInertia : 0.0f;
+  f.iB = bMoves ? b.inverseInertia : 0.0f;
+  f.frameA = rotate(a.transform.q, joint.localAnchorA - a.localCenter);
+  f.frameB = rotate(b.transform.q, joint.localAnchorB - b.localCenter);
+  f.deltaCenter = b.center - a.center;
+  f.deltaAngle = relativeAngle(b.transform.q, a.transform.q);
+  f.qA = a.transform.q;
+  f.qB = b.transform.q;
+  f.localCenterA = a.localCenter;
+  f.localCenterB = b.localCenter;
+  f.centerB = b.center;
+  f.softness = context.jointSoftness;
+  f.maxSpeed = context.maxLinearSpeed;
+  f.maxSpin = context.maxAngularSpeed;
+  if (joint.constraintHertz > 0.0f) {
+    // The joint's own stiffness, capped as the world's (jointSoftnessFor).
+    f.softness = jointSoftnessFor(joint.constraintHertz, joint.constraintDampingRatio, context);
+    f.softness.maxBias = context.jointSoftness.maxBias;
+  }
+  if (!context.warmStarting) {
+    // Every part starts the step without an impulse: a fresh joint with the same settings.
+    std::visit(
+        [](auto& typed) {
+          std::decay_t<decltype(typed)> fresh{};
+          fresh.def = typed.def;
+          typed = fresh;
+        },
+        data);
+  }
+  std::visit([&](auto& typed) { prepareJoint(typed, f, context); }, data);
+}
+
+void prepareJoints(WorldState& w, const StepContext& context) {
+  collectSolvedJoints(w);
+  for (const std::uint32_t slot : w.solvedJoints) {
     Joint& joint = w.joints[slot];
-    const Body& a = w.bodies[joint.bodyA];
-    const Body& b = w.bodies[joint.bodyB];
-    if (!a.moving() && !b.moving()) {
-      continue; // asleep or static (a sleeper joined to a moving body is woken before the solve)
-    }
-    JointFrame& f = joint.frame;
-    // A joint to the world (the mouse joint: bodyA is bodyB) sees a static body A.
-    const bool aMoves = a.moving() && joint.bodyA != joint.bodyB;
-    f.indexA = aMoves ? a.solverIndex : staticIndex;
-    f.indexB = b.moving() ? b.solverIndex : staticIndex;
-    f.mA = aMoves ? a.inverseMass : 0.0f;
-    f.mB = b.moving() ? b.inverseMass : 0.0f;
-    f.iA = aMoves ? a.inverseInertia : 0.0f;
-    f.iB = b.moving() ? b.inverseInertia : 0.0f;
-    f.frameA = rotate(a.transform.q, joint.localAnchorA - a.localCenter);
-    f.frameB = rotate(b.transform.q, joint.localAnchorB - b.localCenter);
-    f.deltaCenter = b.center - a.center;
-    f.deltaAngle = relativeAngle(b.transform.q, a.transform.q);
-    f.qA = a.transform.q;
-    f.qB = b.transform.q;
-    f.localCenterA = a.localCenter;
-    f.localCenterB = b.localCenter;
-    f.centerB = b.center;
-    f.softness = context.jointSoftness;
-    f.maxSpeed = context.maxLinearSpeed;
-    f.maxSpin = context.maxAngularSpeed;
-    if (joint.constraintHertz > 0.0f) {
-      // The joint's own stiffness, capped as the world's (jointSoftnessFor).
-      f.softness = jointSoftnessFor(joint.constraintHertz, joint.constraintDampingRatio, context);
-      f.softness.maxBias = context.jointSoftness.maxBias;
-    }
-    if (!context.warmStarting) {
-      // Every part starts the step without an impulse: a fresh joint with the same settings.
-      std::visit(
-          [](auto& data) {
-            std::decay_t<decltype(data)> fresh{};
-            fresh.def = data.def;
-            data = fresh;
-          },
-          joint.data);
-    }
-    std::visit([&](auto& data) { prepareJoint(data, f, context); }, joint.data);
-    w.solvedJoints.push_back(slot);
+    prepareJoint(w, joint, joint.data, joint.frame, context);
   }
 }
 
@@ -94,20 +111,27 @@ void solveJoints(WorldState& w, const StepContext& context, bool useBias) {
   }
 }
 
+bool updateReaction(Joint& joint, const JointData& data, const JointFrame& frame, float inverseH) {
+  joint.reaction = std::visit([&](const auto& typed) { return jointReaction(typed, frame, inverseH); }, data);
+  const bool over =
+      length(joint.reaction.force) > joint.breakForce || std::abs(joint.reaction.torque) > joint.breakTorque;
+  const bool crossed = over && !joint.overBreakLimit;
+  joint.overBreakLimit = over;
+  return crossed;
+}
+
+void raiseBreak(WorldState& w, const Joint& joint) {
+  w.jointEvents.breaks.push_back({joint.id, length(joint.reaction.force), std::abs(joint.reaction.torque)});
+}
+
 void finishJoints(WorldState& w, const StepContext& context) {
   w.lastInverseH = context.inverseH;
   // A sleeping joint still carries what it carried when it fell asleep.
   for (const std::uint32_t slot : w.solvedJoints) {
     Joint& joint = w.joints[slot];
-    joint.reaction =
-        std::visit([&](const auto& data) { return jointReaction(data, joint.frame, context.inverseH); }, joint.data);
-    const float force = length(joint.reaction.force);
-    const float torque = std::abs(joint.reaction.torque);
-    const bool over = force > joint.breakForce || torque > joint.breakTorque;
-    if (over && !joint.overBreakLimit) {
-      w.jointEvents.breaks.push_back({joint.id, force, torque});
+    if (updateReaction(joint, joint.data, joint.frame, context.inverseH)) {
+      raiseBreak(w, joint);
     }
-    joint.overBreakLimit = over;
   }
 }
 

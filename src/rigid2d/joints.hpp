@@ -10,6 +10,7 @@
 #include "rigid2d/weld_joint.hpp"
 #include "rigid2d/wheel_joint.hpp"
 
+#include <utility>
 #include <variant>
 
 namespace impetus::rigid2d::detail {
@@ -54,6 +55,14 @@ void solveJoint(JointSim& joint, std::vector<BodyState>& states, std::uint32_t s
 
 // joint.cpp: the joints' part of the step. The soft step solves them in the constraint graph's
 // colours with the contacts (contact_solver.cpp); the book's solver, in joint slot order.
+/// This step's joints (WorldState::solvedJoints): the awake set's with a moving body, in slot order.
+void collectSolvedJoints(WorldState& w);
+/// The joint's bodies' solver indices this step (the static index for one not moving).
+[[nodiscard]] std::pair<std::uint32_t, std::uint32_t> jointSolverIndices(const WorldState& w, const Joint& joint);
+/// One joint's frame for this step and its type's prepare, into `data` and `f` (the Joint's own
+/// or its solver copy's). Reads only the joint and its bodies: joints prepare on threads.
+void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, JointFrame& f, const StepContext& context);
+/// collectSolvedJoints, then each joint prepared in its slot (the book's solver).
 void prepareJoints(WorldState& w, const StepContext& context);
 /// One joint's warm start: its parts' accumulated impulses applied again.
 void warmStartJoint(WorldState& w, std::uint32_t slot);
@@ -61,7 +70,27 @@ void solveJoint(WorldState& w, std::uint32_t slot, const StepContext& context, b
 /// Every joint's warm start and solve, in joint slot order (the book's solver).
 void warmStartJoints(WorldState& w);
 void solveJoints(WorldState& w, const StepContext& context, bool useBias);
-/// Reaction readouts and break events, after the substeps.
+/// The joint's reaction over the step from its data (N, N m); true when it has just gone over
+/// its break limits (a break event is due: raiseBreak, in slot order).
+bool updateReaction(Joint& joint, const JointData& data, const JointFrame& frame, float inverseH);
+void raiseBreak(WorldState& w, const Joint& joint);
+/// Reaction readouts and break events after the substeps, of joints solved in their slots.
 void finishJoints(WorldState& w, const StepContext& context);
+
+// contact_solver.cpp: the soft step keeps its joints' solver copies (JointSim) in colour order
+// from step to step while neither its joints nor its moving bodies change (as Box2D v3 keeps
+// joint sims in the graph's colours). While a joint has a copy, the copy holds its data.
+/// The joint's data, wherever it lives now.
+[[nodiscard]] JointData& jointDataOf(WorldState& w, std::uint32_t slot);
+[[nodiscard]] const JointData& jointDataOf(const WorldState& w, std::uint32_t slot);
+/// A destroyed joint's copy, if any, forgotten, and the joints coloured again at the next step
+/// (its slot may be reused before then, by a joint with other bodies).
+void forgetJointSim(WorldState& w, std::uint32_t slot);
+/// Every copy's data back into its joint, and the copies gone (before the book's solver runs).
+void returnJointSims(WorldState& w);
+/// The copies dropped without a look (a snapshot just replaced every joint).
+void dropJointSims(WorldState& w);
+/// The soft step's reactions and break events, from the copies, on threads.
+void finishJointSims(WorldState& w, const StepContext& context);
 
 } // namespace impetus::rigid2d::detail

@@ -182,8 +182,10 @@ void World::saveState(WorldSnapshot& out) const {
     }
   }
   putList(put, w.freeContacts);
-  for (const Joint& j : w.joints) {
-    if (j.alive) {
+  for (std::uint32_t slot = 0; slot < w.joints.size(); ++slot) {
+    if (w.joints[slot].alive) {
+      Joint j = w.joints[slot];
+      j.data = detail::jointDataOf(w, slot); // the solver's copy holds it while the joint is awake
       put.put(j);
     }
   }
@@ -260,6 +262,7 @@ void World::restoreState(const WorldSnapshot& snapshot) {
   if (!listsValid) {
     throw Error("snapshot", "snapshot: a body's contact list points outside the contacts");
   }
+  detail::dropJointSims(w); // what they held is the timeline that was left
   for (Joint& j : w.joints) {
     if (j.alive) {
       const JointId id = j.id; // this world's (a replay's world has a number of its own)

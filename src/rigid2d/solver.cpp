@@ -130,8 +130,7 @@ constexpr StageStep beforeSubsteps[] = {
     {"prepare",
      [](WorldState& w, const StepContext& c) {
        buildSolverBodies(w);
-       prepareJoints(w, c);
-       prepareConstraints(w, c); // colours the joints with the contacts and prepares the contacts
+       prepareConstraints(w, c); // colours the joints with the contacts and prepares both
      },
      &StepProfile::prepare},
 };
@@ -150,7 +149,7 @@ constexpr StageStep afterSubsteps[] = {
     {"store impulses",
      [](WorldState& w, const StepContext& c) {
        storeImpulses(w);
-       finishJoints(w, c);
+       finishJointSims(w, c);
      },
      &StepProfile::storeImpulses},
 };

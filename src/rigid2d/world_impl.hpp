@@ -57,6 +57,7 @@ struct Shape {
   std::uint64_t userData = 0;
   std::int32_t proxy = DynamicTree::nullNode;
   bool inStaticTree = false; ///< which broadphase tree holds the proxy (fat box: WorldState::fatBoxes)
+  bool fatBoxGrown = false;  ///< the finalize gave it a new fat box that its tree does not hold yet
   ShapeId id;
   bool alive = false;
 };
@@ -285,8 +286,9 @@ struct WorldState {
   std::vector<BodySim> sims;
   std::vector<SolverBodyInfo> bodyInfo; ///< by body slot, rebuilt each step with `states`
   std::unique_ptr<ContactSolverData> contactSolver;
-  std::vector<BulletStart> bullets; ///< scratch of the finalize pass
-  std::vector<float> islandRest;    ///< scratch of the sleep pass (least rest time per island)
+  std::vector<BulletStart> bullets;      ///< scratch of the finalize pass
+  std::vector<std::uint8_t> finishMarks; ///< the finalize's, by solver index: what the serial pass does
+  std::vector<float> islandRest;         ///< scratch of the sleep pass (least rest time per island)
 
   ContactEvents contactEvents;
   SensorEvents sensorEvents;

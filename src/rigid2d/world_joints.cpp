@@ -157,7 +157,7 @@ JointId addJoint(WorldState& w, const JointDefBase& base, detail::JointData data
 
 template <class T> T& jointData(WorldState& w, JointId id, const char* what) {
   Joint& j = w.joint(id);
-  T* data = std::get_if<T>(&j.data);
+  T* data = std::get_if<T>(&detail::jointDataOf(w, id.index));
   if (data == nullptr) {
     throwInvalid("joint id", static_cast<double>(id.index), std::string("not a ") + what + " joint");
   }
@@ -167,8 +167,8 @@ template <class T> T& jointData(WorldState& w, JointId id, const char* what) {
 }
 
 template <class T> const T& jointData(const WorldState& w, JointId id, const char* what) {
-  const Joint& j = w.joint(id);
-  const T* data = std::get_if<T>(&j.data);
+  static_cast<void>(w.joint(id)); // refuses an id that is not live
+  const T* data = std::get_if<T>(&detail::jointDataOf(w, id.index));
   if (data == nullptr) {
     throwInvalid("joint id", static_cast<double>(id.index), std::string("not a ") + what + " joint");
   }
@@ -304,6 +304,7 @@ void World::destroyJoint(JointId id) {
       }
     }
   }
+  detail::forgetJointSim(w, id.index);
   j = Joint{};
   w.jointIds.freeId(id);
 }

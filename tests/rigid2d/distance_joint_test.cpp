@@ -92,6 +92,34 @@ TEST(DistanceJoint2D, rope_holds_a_swinging_ball_within_one_percent) {
   EXPECT_NEAR(peakTension, 3.0f * weight, 0.03f * 3.0f * weight);
 }
 
+// The solver keeps each awake joint's data in its own copy from step to step. A joint destroyed
+// between steps, with a new one made in its slot, must not hand the new one its copy: a ball
+// moved from a 1 m rod to a 2 m rope (same slot) hangs at 2 m, carrying its weight, and the rope
+// is slack while the ball is thrown up, however long the old rod held.
+TEST(DistanceJoint2D, a_joint_made_in_a_destroyed_joints_slot_starts_as_its_own_def) {
+  World world = makeWorld({0.0f, -g});
+  const BodyId pivot = world.createBody({});
+  const BodyId ball = addBall(world, {0.0f, -1.0f}, 0.1f, 5.0f);
+  DistanceJointDef rod;
+  rod.bodyA = pivot;
+  rod.bodyB = ball;
+  rod.length = 1.0f;
+  const auto old = world.createJoint(rod);
+  for (int i = 0; i < 60; ++i) {
+    world.step(dt);
+  }
+  world.destroyJoint(old);
+  const auto id = world.createJoint(rope(pivot, ball, 2.0f));
+  ASSERT_EQ(id.id.index, old.id.index) << "the test needs the slot reused";
+  for (int i = 0; i < 240; ++i) { // falls 1 m, then the rope's damping-free bounce settles by the
+    world.step(dt);               // solver's softness within a few seconds
+  }
+  const float weight = world.mass(ball) * g;
+  EXPECT_NEAR(distanceJointLength(world, id), 2.0f, 0.01f);
+  EXPECT_NEAR(world.position(ball).y, -2.0f, 0.02f);
+  EXPECT_GT(world.jointReactionForce(id).y, 0.5f * weight) << "the rope carries the ball";
+}
+
 // A ball hanging at rest on a rope is held by its weight; thrown up (toward the pivot) the rope
 // goes slack and pushes nothing: the ball flies as a projectile, v = v0 - g t, with no reaction.
 TEST(DistanceJoint2D, rope_goes_slack_without_pushing) {
