@@ -2,72 +2,23 @@
 // Box2D v3): soft contacts with a stiffness in hertz, warm starting, a relax pass, restitution,
 // Coulomb friction and rolling resistance.
 //
-// Layout: the constraint graph. The joints, then the touching contacts, are coloured each step so
-// that no two constraints of a colour share a moving body (static bodies do not count: nothing
-// writes them). A colour's joints are solved on several threads, then its contacts. A colour's
-// contacts are then
-// independent: they are solved several at a time in SIMD lanes (contact_wide_kernels.hpp: eight
-// with AVX2 where the CPU has it, four with SSE2) and their batches may run on several threads,
-// with results that depend on neither. Contacts that find no free colour (a body touching very
-// many others) go to a small overflow list solved one by one first. Within a colour, contacts
-// keep their pool order, so the whole solve has a fixed order and is bit-identical run after run.
-#include "rigid2d/contact_constraint.hpp"
-#include "rigid2d/joints.hpp"
+// Layout: the constraint graph (constraint_graph.hpp). The joints keep their colours while the
+// joints and moving bodies stay the same (joint_graph.cpp); the touching contacts are coloured
+// after them each step. A colour's joints are solved on several threads, then its contacts. A
+// colour's contacts are independent: they are solved several at a time in SIMD lanes
+// (contact_wide_kernels.hpp: eight with AVX2 where the CPU has it, four with SSE2) and their
+// batches may run on several threads, with results that depend on neither. Contacts that find
+// no free colour (a body touching very many others) go to a small overflow list solved one by
+// one first. Within a colour, contacts keep their pool order, so the whole solve has a fixed
+// order and is bit-identical run after run.
+#include "rigid2d/constraint_graph.hpp"
 
 #include <impetus/math/scalar.hpp>
 
 #include <algorithm>
 #include <array>
-#include <bit>
 
 namespace impetus::rigid2d::detail {
-namespace {
-
-constexpr int colourCount = 24;
-/// A joint without a solver copy, in ContactSolverData::simOfJoint.
-constexpr std::uint32_t noJointSim = ~std::uint32_t{0};
-/// Contacts between two moving bodies use colours [0, dynamicColourCount); contacts with a static
-/// body, which take up one body only, may use any colour, so the last ones stay free for them.
-/// (Box2D v3 keeps static contacts out of colour 0; here that delayed the ground's support of a
-/// stack by a colour each substep and let a 10-box stack sway 2 cm, against 0.5 cm.)
-constexpr int dynamicColourCount = colourCount - 4;
-constexpr std::uint32_t allColours = (std::uint32_t{1} << colourCount) - 1;
-constexpr std::uint32_t dynamicColours = (std::uint32_t{1} << dynamicColourCount) - 1;
-static_assert(colourCount < 32);
-
-/// Storage for wide batches whose layout only the kernels know: aligned blocks.
-struct alignas(wideAlignment) WideBlock {
-  std::byte bytes[wideAlignment];
-};
-
-} // namespace
-
-struct ContactSolverData {
-  const WideKernels* kernels = nullptr;
-  std::vector<WideBlock> wide;                              ///< batches, colour by colour
-  std::vector<std::uint32_t> slots;                         ///< contact slot per lane (or ~0), width per batch
-  std::array<std::uint32_t, colourCount + 1> colourStart{}; ///< first batch of each colour
-  std::vector<ContactConstraint> overflow;
-  std::vector<std::uint32_t> bodyColours; ///< per solver body: bit c set when colour c holds it
-  std::array<std::vector<std::uint32_t>, colourCount> colourContacts;
-  std::array<std::vector<std::uint32_t>, colourCount> colourJoints; ///< joint slots, in slot order
-  std::vector<std::uint32_t> overflowJoints;
-  /// The joints solved this step: the overflow's, then colour by colour (jointColourStart). Kept
-  /// from step to step while the joints and moving bodies they were coloured for stay the same.
-  std::vector<JointSim> jointSims;
-  std::array<std::uint32_t, colourCount + 1> jointColourStart{};
-  std::vector<std::uint32_t> simOfJoint;       ///< by joint slot: its index in jointSims, or noJointSim
-  std::vector<std::uint32_t> colouredJoints;   ///< the solvedJoints the joint colours were made for
-  std::vector<std::uint32_t> colouredBodies;   ///< ... and the awakeBodies
-  std::vector<std::uint32_t> jointBodyColours; ///< per solver body: the joints' colours (bodyColours' start)
-  std::vector<std::uint8_t> jointBreaks;       ///< by jointSims index: a break event is due
-  bool jointColoursValid = false;              ///< the copies match colouredJoints (no joint destroyed since)
-  Softness soft, staticSoft;
-  float pushSpeed = 0.0f;
-  float restitutionThreshold = 0.0f;
-
-  [[nodiscard]] void* batches() { return wide.data(); }
-};
 
 WorldState::WorldState() = default;
 WorldState::~WorldState() = default;
@@ -88,31 +39,6 @@ const WideKernels& selectWideKernels(SimdLevel level) {
 }
 
 namespace {
-
-/// The first colour among `allowed` free for both moving bodies (static ones pass as null), or
-/// -1; marks it taken. One mask of used colours per body: a lookup touches two words.
-int findColour(ContactSolverData& d, std::uint32_t a, std::uint32_t b, std::uint32_t staticIndex,
-               std::uint32_t allowed) {
-  std::uint32_t used = 0;
-  if (a != staticIndex) {
-    used |= d.bodyColours[a];
-  }
-  if (b != staticIndex) {
-    used |= d.bodyColours[b];
-  }
-  const std::uint32_t free = allowed & ~used;
-  if (free == 0) {
-    return -1;
-  }
-  const std::uint32_t bit = free & (~free + 1); // the lowest free colour
-  if (a != staticIndex) {
-    d.bodyColours[a] |= bit;
-  }
-  if (b != staticIndex) {
-    d.bodyColours[b] |= bit;
-  }
-  return std::countr_zero(bit);
-}
 
 Vec2f velocityAt(const BodyState& s, const Vec2f& r) { return s.v + cross(s.w, r); }
 
@@ -286,10 +212,6 @@ constexpr std::uint32_t prefetchDistance = 2;
   }
 }
 
-/// The fewest joints of a colour worth a task of their own (a joint's solve is about a tenth of a
-/// microsecond).
-constexpr std::uint32_t minJointsPerTask = 64;
-
 /// The fewest contact batches worth a task of their own in the prepare (a batch of 4 or 8
 /// contacts takes about half a microsecond to gather and prepare).
 constexpr std::uint32_t minPrepareBatchesPerTask = 16;
@@ -319,79 +241,6 @@ void forEachColour(WorldState& w, JointOne&& jointOne, PerRange&& perRange, PerO
     const std::uint32_t count = d.colourStart[colour + 1] - first;
     w.parallelFor(count, 16, [&](std::uint32_t begin, std::uint32_t end) { perRange(first + begin, first + end); });
   }
-}
-
-/// Colours this step's joints (WorldState::solvedJoints) in the graph, before the contacts (joints
-/// hold structures together: a colour of their own is worth more to them), and makes their
-/// solver copies in colour order. A joint with no rows (a filter joint) takes none. Done again
-/// only when the joints or the moving bodies changed (the same colouring would come out);
-/// otherwise the copies, impulses and settings in them, stay where they are.
-void colourJoints(WorldState& w, ContactSolverData& d) {
-  const std::uint32_t staticIndex = w.staticIndex();
-  if (d.jointColoursValid && d.colouredJoints == w.solvedJoints && d.colouredBodies == w.awakeBodies) {
-    d.bodyColours = d.jointBodyColours;
-    return;
-  }
-  returnJointSims(w);
-  for (std::vector<std::uint32_t>& list : d.colourJoints) {
-    list.clear();
-  }
-  d.overflowJoints.clear();
-  for (const std::uint32_t slot : w.solvedJoints) {
-    const Joint& joint = w.joints[slot];
-    if (joint.type() == JointType::filter) {
-      continue;
-    }
-    const auto [ia, ib] = jointSolverIndices(w, joint);
-    const bool withStatic = ia == staticIndex || ib == staticIndex;
-    const int colour = findColour(d, ia, ib, staticIndex, withStatic ? allColours : dynamicColours);
-    if (colour < 0) {
-      d.overflowJoints.push_back(slot);
-    } else {
-      d.colourJoints[static_cast<std::size_t>(colour)].push_back(slot);
-    }
-  }
-  // The solver's copies, in solve order.
-  std::size_t count = d.overflowJoints.size();
-  for (const std::vector<std::uint32_t>& list : d.colourJoints) {
-    count += list.size();
-  }
-  d.jointSims.resize(count);
-  d.simOfJoint.resize(w.joints.size(), noJointSim);
-  std::uint32_t at = 0;
-  const auto copy = [&](const std::vector<std::uint32_t>& list) {
-    w.parallelFor(static_cast<std::uint32_t>(list.size()), minJointsPerTask,
-                  [&](std::uint32_t begin, std::uint32_t end) {
-                    for (std::uint32_t k = begin; k < end; ++k) {
-                      JointSim& sim = d.jointSims[at + k];
-                      sim.data = w.joints[list[k]].data;
-                      sim.slot = list[k];
-                      d.simOfJoint[list[k]] = at + k;
-                    }
-                  });
-    at += static_cast<std::uint32_t>(list.size());
-  };
-  copy(d.overflowJoints);
-  for (std::size_t c = 0; c < colourCount; ++c) {
-    d.jointColourStart[c] = at;
-    copy(d.colourJoints[c]);
-  }
-  d.jointColourStart[colourCount] = at;
-  d.colouredJoints.assign(w.solvedJoints.begin(), w.solvedJoints.end());
-  d.colouredBodies.assign(w.awakeBodies.begin(), w.awakeBodies.end());
-  d.jointBodyColours = d.bodyColours;
-  d.jointColoursValid = true;
-}
-
-/// Each joint copy's frame for this step and its type's prepare, on threads.
-void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& context) {
-  w.parallelFor(static_cast<std::uint32_t>(d.jointSims.size()), minJointsPerTask,
-                [&](std::uint32_t begin, std::uint32_t end) {
-                  for (std::uint32_t k = begin; k < end; ++k) {
-                    JointSim& sim = d.jointSims[k];
-                    prepareJoint(w, w.joints[sim.slot], sim.data, sim.frame, context);
-                  }
-                });
 }
 
 } // namespace
@@ -555,79 +404,6 @@ void storeImpulses(WorldState& w) {
                        hitThreshold);
     }
   });
-}
-
-void finishJointSims(WorldState& w, const StepContext& context) {
-  w.lastInverseH = context.inverseH;
-  ContactSolverData& d = *w.contactSolver;
-  const auto count = static_cast<std::uint32_t>(d.jointSims.size());
-  d.jointBreaks.resize(count);
-  w.parallelFor(count, minJointsPerTask, [&](std::uint32_t begin, std::uint32_t end) {
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const JointSim& sim = d.jointSims[k];
-      d.jointBreaks[k] = updateReaction(w.joints[sim.slot], sim.data, sim.frame, context.inverseH) ? 1 : 0;
-    }
-  });
-  // Break events in joint slot order, as the game would list its joints (a rare event: the
-  // sort sees a few).
-  const std::size_t first = w.jointEvents.breaks.size();
-  for (std::uint32_t k = 0; k < count; ++k) {
-    if (d.jointBreaks[k] != 0) {
-      raiseBreak(w, w.joints[d.jointSims[k].slot]);
-    }
-  }
-  std::sort(w.jointEvents.breaks.begin() + static_cast<std::ptrdiff_t>(first), w.jointEvents.breaks.end(),
-            [](const JointBreakEvent& a, const JointBreakEvent& b) { return a.joint.index < b.joint.index; });
-}
-
-JointData& jointDataOf(WorldState& w, std::uint32_t slot) {
-  if (w.contactSolver && slot < w.contactSolver->simOfJoint.size()) {
-    if (const std::uint32_t k = w.contactSolver->simOfJoint[slot]; k != noJointSim) {
-      return w.contactSolver->jointSims[k].data;
-    }
-  }
-  return w.joints[slot].data;
-}
-
-const JointData& jointDataOf(const WorldState& w, std::uint32_t slot) {
-  return jointDataOf(const_cast<WorldState&>(w), slot);
-}
-
-void forgetJointSim(WorldState& w, std::uint32_t slot) {
-  if (w.contactSolver && slot < w.contactSolver->simOfJoint.size()) {
-    if (std::uint32_t& k = w.contactSolver->simOfJoint[slot]; k != noJointSim) {
-      w.contactSolver->jointSims[k].slot = noJointSim;
-      k = noJointSim;
-      // Coloured again next step, even if a new joint in this slot makes the same list.
-      w.contactSolver->jointColoursValid = false;
-    }
-  }
-}
-
-void returnJointSims(WorldState& w) {
-  if (!w.contactSolver) {
-    return;
-  }
-  ContactSolverData& d = *w.contactSolver;
-  for (const JointSim& sim : d.jointSims) {
-    if (sim.slot != noJointSim) {
-      w.joints[sim.slot].data = sim.data;
-      d.simOfJoint[sim.slot] = noJointSim;
-    }
-  }
-  dropJointSims(w);
-}
-
-void dropJointSims(WorldState& w) {
-  if (!w.contactSolver) {
-    return;
-  }
-  ContactSolverData& d = *w.contactSolver;
-  d.jointSims.clear();
-  std::fill(d.simOfJoint.begin(), d.simOfJoint.end(), noJointSim);
-  d.colouredJoints.clear();
-  d.colouredBodies.clear();
-  d.jointColoursValid = false;
 }
 
 ConstraintGraphCounts constraintGraph(const WorldState& w) {

@@ -375,111 +375,6 @@ void collideContacts(WorldState& w) {
   w.awakeContactSet.compact();
 }
 
-/// Gives each of the body's shapes whose box left its fat box a new fat box and marks it;
-/// true if any grew. Writes only the body's own shapes' entries, so bodies run on threads.
-bool growFatBoxes(WorldState& w, const Body& b) {
-  bool grew = false;
-  for (const std::uint32_t slot : b.shapes) {
-    Shape& s = w.shapes[slot];
-    const bool isStatic = b.type == BodyType::staticBody;
-    const AABB box = isStatic ? shapeBox(s, b.transform) : reachBox(s, b.transform);
-    if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
-      fatBox = enlarge(box, isStatic ? 0.0f : aabbMargin);
-      s.fatBoxGrown = true;
-      grew = true;
-    }
-  }
-  return grew;
-}
-
-/// The body's grown fat boxes into their trees and the move buffer: serial, in body order (the
-/// trees and the buffer are shared, and the pair update depends on the buffer's order).
-void moveGrownProxies(WorldState& w, const Body& b) {
-  for (const std::uint32_t slot : b.shapes) {
-    Shape& s = w.shapes[slot];
-    if (!s.fatBoxGrown) {
-      continue;
-    }
-    s.fatBoxGrown = false;
-    // The moving tree is grown in place and rebuilt before the next pair update.
-    if (s.inStaticTree) {
-      w.staticTree.moveProxy(s.proxy, w.fatBoxes[slot]);
-    } else {
-      w.movingTree.enlargeProxy(s.proxy, w.fatBoxes[slot]);
-    }
-    w.moveBuffer.push_back(slot);
-  }
-}
-
-void synchronizeShapes(WorldState& w, const Body& b) {
-  if (growFatBoxes(w, b)) {
-    moveGrownProxies(w, b);
-  }
-}
-
-/// The step's end for one moving body: velocities and pose from the solver's state, the centre
-/// swept against static shapes, the measures the sleep test reads, forces cleared. Writes only
-/// the body and reads the static tree (which the finalize does not change), so bodies run on
-/// threads.
-void finishBody(const WorldState& w, Body& b, const detail::BodyState& s, float dt) {
-  b.linearVelocity = s.v;
-  b.angularVelocity = s.w;
-  const Vec2f start = b.center;
-  b.center += s.dp;
-  if (b.type == BodyType::dynamicBody) {
-    b.center = detail::sweepAgainstStatic(w, b, start, b.center);
-  }
-  const Rot2f q = normalize(mul(s.dq, b.transform.q));
-  b.stepSpeed = length(b.center - start) / dt;
-  // The turn's sine (the angle to third order; a half turn or more when the cosine is
-  // negative): enough for the sleep test, without an atan2 per body per step.
-  b.stepSpin = (s.dq.c < 0.0f ? pi<float> : std::abs(s.dq.s)) / dt;
-  b.transform = {b.center - rotate(q, b.localCenter), q};
-  b.force = {};
-  b.torque = 0.0f;
-}
-
-/// The fewest bodies the finalize finishes as one task: a body costs tens of nanoseconds (more
-/// with a continuous sweep), so a smaller task costs more to hand out than it does.
-constexpr std::uint32_t minFinishBodiesPerTask = 128;
-
-/// What the finalize's serial pass does with a body the parallel pass finished.
-enum FinishMark : std::uint8_t { finishedInPlace = 0, fatBoxesGrew = 1, bulletToSweep = 2 };
-
-/// Finalize: apply the deltas, clear forces, refresh the broadphase. The bodies are finished on
-/// threads and their fat boxes grown; then, in body order, the grown boxes go into the trees.
-/// Bullets come last: they sweep against where everything else ended up.
-void finalizeBodies(WorldState& w, float dt) {
-  const auto count = static_cast<std::uint32_t>(w.awakeBodies.size());
-  w.finishMarks.resize(count);
-  w.parallelFor(count, minFinishBodiesPerTask, [&](std::uint32_t begin, std::uint32_t end) {
-    for (std::uint32_t i = begin; i < end; ++i) {
-      Body& b = w.bodies[w.awakeBodies[i]];
-      if (b.bullet && b.type == BodyType::dynamicBody) {
-        w.finishMarks[i] = bulletToSweep; // finished serially, where its start is recorded
-        continue;
-      }
-      finishBody(w, b, w.states[i], dt);
-      w.finishMarks[i] = growFatBoxes(w, b) ? fatBoxesGrew : finishedInPlace;
-    }
-  });
-  w.bullets.clear();
-  for (std::uint32_t i = 0; i < count; ++i) {
-    Body& b = w.bodies[w.awakeBodies[i]];
-    if (w.finishMarks[i] == fatBoxesGrew) {
-      moveGrownProxies(w, b);
-    } else if (w.finishMarks[i] == bulletToSweep) {
-      w.bullets.push_back({w.awakeBodies[i], b.center, b.transform.q});
-      finishBody(w, b, w.states[i], dt);
-    }
-  }
-  for (const detail::BulletStart& bullet : w.bullets) {
-    Body& b = w.bodies[bullet.body];
-    detail::sweepBullet(w, b, bullet.center, bullet.rotation);
-    synchronizeShapes(w, b);
-  }
-}
-
 } // namespace
 
 World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
@@ -525,7 +420,7 @@ void World::setTransform(BodyId id, const Vec2f& position, float angle) {
   }
   b.transform = {position, Rot2f::fromAngle(angle)};
   b.center = transformPoint(b.transform, b.localCenter);
-  synchronizeShapes(*impl_, b);
+  detail::synchronizeShapes(*impl_, b);
 }
 
 void World::step(float dt) {
@@ -572,7 +467,7 @@ void World::step(float dt) {
                                       contact.manifold.normal, contact.approachSpeed});
     }
   }
-  finalizeBodies(w, dt);
+  detail::finalizeBodies(w, dt);
   // The moving tree tight again for the game's queries between steps (and for the next pair
   // update, which rebuilds only what the game moved since).
   w.movingTree.rebuild();

@@ -449,6 +449,14 @@ void sleepBodyIsland(WorldState& w, std::uint32_t slot);
 /// Accumulates rest time and puts islands to sleep that have rested long enough.
 void updateSleep(WorldState& w, float dt);
 
+// finalize.cpp
+/// Gives the body's shapes whose boxes left their fat boxes new ones, in their trees and the
+/// move buffer (a teleport, a bullet after its sweep).
+void synchronizeShapes(WorldState& w, const Body& b);
+/// The step's end for the awake bodies: velocities and poses from the solver's state, forces
+/// cleared, the broadphase told what moved, bullets swept.
+void finalizeBodies(WorldState& w, float dt);
+
 // continuous.cpp
 /// The radius of the largest circle about the body's centre of mass inside all its shapes that
 /// contain it (0 if none): cached in Body::coreRadius whenever the shapes or mass change.

@@ -1,0 +1,121 @@
+// The step's end for the bodies (its finalize): each moving body takes its velocities and pose
+// from the solver's state, its centre swept against static shapes, and its shapes' fat boxes
+// grown where they left them, on threads; then, in body order, the grown boxes go into the
+// broadphase trees and the move buffer, and bullets sweep last against where everything else
+// ended up.
+#include "rigid2d/world_impl.hpp"
+
+#include <impetus/math/scalar.hpp>
+#include <impetus/rigid2d/constants.hpp>
+
+#include <cmath>
+
+namespace impetus::rigid2d::detail {
+
+namespace {
+
+/// Gives each of the body's shapes whose box left its fat box a new fat box and marks it;
+/// true if any grew. Writes only the body's own shapes' entries, so bodies run on threads.
+bool growFatBoxes(WorldState& w, const Body& b) {
+  bool grew = false;
+  for (const std::uint32_t slot : b.shapes) {
+    Shape& s = w.shapes[slot];
+    const bool isStatic = b.type == BodyType::staticBody;
+    const AABB box = isStatic ? shapeBox(s, b.transform) : reachBox(s, b.transform);
+    if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
+      fatBox = enlarge(box, isStatic ? 0.0f : aabbMargin);
+      s.fatBoxGrown = true;
+      grew = true;
+    }
+  }
+  return grew;
+}
+
+/// The body's grown fat boxes into their trees and the move buffer: serial, in body order (the
+/// trees and the buffer are shared, and the pair update depends on the buffer's order).
+void moveGrownProxies(WorldState& w, const Body& b) {
+  for (const std::uint32_t slot : b.shapes) {
+    Shape& s = w.shapes[slot];
+    if (!s.fatBoxGrown) {
+      continue;
+    }
+    s.fatBoxGrown = false;
+    // The moving tree is grown in place and rebuilt before the next pair update.
+    if (s.inStaticTree) {
+      w.staticTree.moveProxy(s.proxy, w.fatBoxes[slot]);
+    } else {
+      w.movingTree.enlargeProxy(s.proxy, w.fatBoxes[slot]);
+    }
+    w.moveBuffer.push_back(slot);
+  }
+}
+
+/// The step's end for one moving body: velocities and pose from the solver's state, the centre
+/// swept against static shapes, the measures the sleep test reads, forces cleared. Writes only
+/// the body and reads the static tree (which the finalize does not change), so bodies run on
+/// threads.
+void finishBody(const WorldState& w, Body& b, const BodyState& s, float dt) {
+  b.linearVelocity = s.v;
+  b.angularVelocity = s.w;
+  const Vec2f start = b.center;
+  b.center += s.dp;
+  if (b.type == BodyType::dynamicBody) {
+    b.center = sweepAgainstStatic(w, b, start, b.center);
+  }
+  const Rot2f q = normalize(mul(s.dq, b.transform.q));
+  b.stepSpeed = length(b.center - start) / dt;
+  // The turn's sine (the angle to third order; a half turn or more when the cosine is
+  // negative): enough for the sleep test, without an atan2 per body per step.
+  b.stepSpin = (s.dq.c < 0.0f ? pi<float> : std::abs(s.dq.s)) / dt;
+  b.transform = {b.center - rotate(q, b.localCenter), q};
+  b.force = {};
+  b.torque = 0.0f;
+}
+
+/// The fewest bodies the finalize finishes as one task: a body costs tens of nanoseconds (more
+/// with a continuous sweep), so a smaller task costs more to hand out than it does.
+constexpr std::uint32_t minFinishBodiesPerTask = 128;
+
+/// What the finalize's serial pass does with a body the parallel pass finished.
+enum FinishMark : std::uint8_t { finishedInPlace = 0, fatBoxesGrew = 1, bulletToSweep = 2 };
+
+} // namespace
+
+void synchronizeShapes(WorldState& w, const Body& b) {
+  if (growFatBoxes(w, b)) {
+    moveGrownProxies(w, b);
+  }
+}
+
+void finalizeBodies(WorldState& w, float dt) {
+  const auto count = static_cast<std::uint32_t>(w.awakeBodies.size());
+  w.finishMarks.resize(count);
+  w.parallelFor(count, minFinishBodiesPerTask, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t i = begin; i < end; ++i) {
+      Body& b = w.bodies[w.awakeBodies[i]];
+      if (b.bullet && b.type == BodyType::dynamicBody) {
+        w.finishMarks[i] = bulletToSweep; // finished serially, where its start is recorded
+        continue;
+      }
+      finishBody(w, b, w.states[i], dt);
+      w.finishMarks[i] = growFatBoxes(w, b) ? fatBoxesGrew : finishedInPlace;
+    }
+  });
+  w.bullets.clear();
+  for (std::uint32_t i = 0; i < count; ++i) {
+    Body& b = w.bodies[w.awakeBodies[i]];
+    if (w.finishMarks[i] == fatBoxesGrew) {
+      moveGrownProxies(w, b);
+    } else if (w.finishMarks[i] == bulletToSweep) {
+      w.bullets.push_back({w.awakeBodies[i], b.center, b.transform.q});
+      finishBody(w, b, w.states[i], dt);
+    }
+  }
+  for (const BulletStart& bullet : w.bullets) {
+    Body& b = w.bodies[bullet.body];
+    sweepBullet(w, b, bullet.center, bullet.rotation);
+    synchronizeShapes(w, b);
+  }
+}
+
+} // namespace impetus::rigid2d::detail

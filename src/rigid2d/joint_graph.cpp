@@ -1,0 +1,156 @@
+// The joints in the soft step's constraint graph: coloured before the contacts, their solver
+// copies (JointSim) kept in colour order from step to step while neither the joints nor the
+// moving bodies change (as Box2D v3 keeps its joint sims in the graph's colours), prepared and
+// finished on threads. While a joint has a copy, the copy holds its data (jointDataOf).
+#include "rigid2d/constraint_graph.hpp"
+
+#include <algorithm>
+
+namespace impetus::rigid2d::detail {
+
+/// Colours this step's joints (WorldState::solvedJoints) in the graph, before the contacts (joints
+/// hold structures together: a colour of their own is worth more to them), and makes their
+/// solver copies in colour order. A joint with no rows (a filter joint) takes none. Done again
+/// only when the joints or the moving bodies changed (the same colouring would come out);
+/// otherwise the copies, impulses and settings in them, stay where they are.
+void colourJoints(WorldState& w, ContactSolverData& d) {
+  const std::uint32_t staticIndex = w.staticIndex();
+  if (d.jointColoursValid && d.colouredJoints == w.solvedJoints && d.colouredBodies == w.awakeBodies) {
+    d.bodyColours = d.jointBodyColours;
+    return;
+  }
+  returnJointSims(w);
+  for (std::vector<std::uint32_t>& list : d.colourJoints) {
+    list.clear();
+  }
+  d.overflowJoints.clear();
+  for (const std::uint32_t slot : w.solvedJoints) {
+    const Joint& joint = w.joints[slot];
+    if (joint.type() == JointType::filter) {
+      continue;
+    }
+    const auto [ia, ib] = jointSolverIndices(w, joint);
+    const bool withStatic = ia == staticIndex || ib == staticIndex;
+    const int colour = findColour(d, ia, ib, staticIndex, withStatic ? allColours : dynamicColours);
+    if (colour < 0) {
+      d.overflowJoints.push_back(slot);
+    } else {
+      d.colourJoints[static_cast<std::size_t>(colour)].push_back(slot);
+    }
+  }
+  // The solver's copies, in solve order.
+  std::size_t count = d.overflowJoints.size();
+  for (const std::vector<std::uint32_t>& list : d.colourJoints) {
+    count += list.size();
+  }
+  d.jointSims.resize(count);
+  d.simOfJoint.resize(w.joints.size(), noJointSim);
+  std::uint32_t at = 0;
+  const auto copy = [&](const std::vector<std::uint32_t>& list) {
+    w.parallelFor(static_cast<std::uint32_t>(list.size()), minJointsPerTask,
+                  [&](std::uint32_t begin, std::uint32_t end) {
+                    for (std::uint32_t k = begin; k < end; ++k) {
+                      JointSim& sim = d.jointSims[at + k];
+                      sim.data = w.joints[list[k]].data;
+                      sim.slot = list[k];
+                      d.simOfJoint[list[k]] = at + k;
+                    }
+                  });
+    at += static_cast<std::uint32_t>(list.size());
+  };
+  copy(d.overflowJoints);
+  for (std::size_t c = 0; c < colourCount; ++c) {
+    d.jointColourStart[c] = at;
+    copy(d.colourJoints[c]);
+  }
+  d.jointColourStart[colourCount] = at;
+  d.colouredJoints.assign(w.solvedJoints.begin(), w.solvedJoints.end());
+  d.colouredBodies.assign(w.awakeBodies.begin(), w.awakeBodies.end());
+  d.jointBodyColours = d.bodyColours;
+  d.jointColoursValid = true;
+}
+
+void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& context) {
+  w.parallelFor(static_cast<std::uint32_t>(d.jointSims.size()), minJointsPerTask,
+                [&](std::uint32_t begin, std::uint32_t end) {
+                  for (std::uint32_t k = begin; k < end; ++k) {
+                    JointSim& sim = d.jointSims[k];
+                    prepareJoint(w, w.joints[sim.slot], sim.data, sim.frame, context);
+                  }
+                });
+}
+
+void finishJointSims(WorldState& w, const StepContext& context) {
+  w.lastInverseH = context.inverseH;
+  ContactSolverData& d = *w.contactSolver;
+  const auto count = static_cast<std::uint32_t>(d.jointSims.size());
+  d.jointBreaks.resize(count);
+  w.parallelFor(count, minJointsPerTask, [&](std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const JointSim& sim = d.jointSims[k];
+      d.jointBreaks[k] = updateReaction(w.joints[sim.slot], sim.data, sim.frame, context.inverseH) ? 1 : 0;
+    }
+  });
+  // Break events in joint slot order, as the game would list its joints (a rare event: the
+  // sort sees a few).
+  const std::size_t first = w.jointEvents.breaks.size();
+  for (std::uint32_t k = 0; k < count; ++k) {
+    if (d.jointBreaks[k] != 0) {
+      raiseBreak(w, w.joints[d.jointSims[k].slot]);
+    }
+  }
+  std::sort(w.jointEvents.breaks.begin() + static_cast<std::ptrdiff_t>(first), w.jointEvents.breaks.end(),
+            [](const JointBreakEvent& a, const JointBreakEvent& b) { return a.joint.index < b.joint.index; });
+}
+
+JointData& jointDataOf(WorldState& w, std::uint32_t slot) {
+  if (w.contactSolver && slot < w.contactSolver->simOfJoint.size()) {
+    if (const std::uint32_t k = w.contactSolver->simOfJoint[slot]; k != noJointSim) {
+      return w.contactSolver->jointSims[k].data;
+    }
+  }
+  return w.joints[slot].data;
+}
+
+const JointData& jointDataOf(const WorldState& w, std::uint32_t slot) {
+  return jointDataOf(const_cast<WorldState&>(w), slot);
+}
+
+void forgetJointSim(WorldState& w, std::uint32_t slot) {
+  if (w.contactSolver && slot < w.contactSolver->simOfJoint.size()) {
+    if (std::uint32_t& k = w.contactSolver->simOfJoint[slot]; k != noJointSim) {
+      w.contactSolver->jointSims[k].slot = noJointSim;
+      k = noJointSim;
+      // Coloured again next step, even if a new joint in this slot makes the same list.
+      w.contactSolver->jointColoursValid = false;
+    }
+  }
+}
+
+void returnJointSims(WorldState& w) {
+  if (!w.contactSolver) {
+    return;
+  }
+  ContactSolverData& d = *w.contactSolver;
+  for (const JointSim& sim : d.jointSims) {
+    if (sim.slot != noJointSim) {
+      w.joints[sim.slot].data = sim.data;
+      d.simOfJoint[sim.slot] = noJointSim;
+    }
+  }
+  dropJointSims(w);
+}
+
+void dropJointSims(WorldState& w) {
+  if (!w.contactSolver) {
+    return;
+  }
+  ContactSolverData& d = *w.contactSolver;
+  d.jointSims.clear();
+  std::fill(d.simOfJoint.begin(), d.simOfJoint.end(), noJointSim);
+  d.colouredJoints.clear();
+  d.colouredBodies.clear();
+  d.jointColoursValid = false;
+}
+
+} // namespace impetus::rigid2d::detail
