@@ -51,7 +51,7 @@ struct ContactSolverData {
   std::vector<std::uint32_t> colouredJoints;   ///< the solvedJoints the joint colours were made for
   std::vector<std::uint32_t> colouredBodies;   ///< ... and the awakeBodies
   std::vector<std::uint32_t> jointBodyColours; ///< per solver body: the joints' colours (bodyColours' start)
-  std::vector<std::uint8_t> jointBreaks;       ///< by jointSims index: a break event is due
+  std::vector<std::uint32_t> breakableJoints;  ///< slots, in slot order, of the copies' joints with break limits
   bool jointColoursValid = false;              ///< the copies match colouredJoints (no joint destroyed since)
   Softness soft, staticSoft;
   float pushSpeed = 0.0f;

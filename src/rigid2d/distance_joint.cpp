@@ -109,7 +109,7 @@ void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyS
   });
 }
 
-JointReaction jointReaction(const DistanceJoint& joint, const JointFrame&, float inverseH) {
+JointReaction jointReaction(const DistanceJoint& joint, float inverseH) {
   const float axial = joint.rod.impulse + joint.spring.impulse + joint.motor.impulse + joint.limit.lowerImpulse -
                       joint.limit.upperImpulse;
   return {joint.axis * (axial * inverseH), 0.0f};

@@ -28,6 +28,6 @@ void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyS
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
 /// The force on body B over the last substep (the impulses along the axis times the substep
 /// rate); a distance joint applies no torque.
-[[nodiscard]] JointReaction jointReaction(const DistanceJoint& joint, const JointFrame& frame, float inverseH);
+[[nodiscard]] JointReaction jointReaction(const DistanceJoint& joint, float inverseH);
 
 } // namespace impetus::rigid2d::detail

@@ -15,9 +15,6 @@ inline void warmStartJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, 
                            std::uint32_t /*staticIndex*/) {}
 inline void solveJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, std::vector<BodyState>& /*states*/,
                        std::uint32_t /*staticIndex*/, const StepContext& /*context*/, bool /*useBias*/) {}
-[[nodiscard]] inline JointReaction jointReaction(const FilterJoint& /*joint*/, const JointFrame& /*frame*/,
-                                                 float /*inverseH*/) {
-  return {};
-}
+[[nodiscard]] inline JointReaction jointReaction(const FilterJoint& /*joint*/, float /*inverseH*/) { return {}; }
 
 } // namespace impetus::rigid2d::detail

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <type_traits>
 
@@ -111,26 +112,36 @@ void solveJoints(WorldState& w, const StepContext& context, bool useBias) {
   }
 }
 
-bool updateReaction(Joint& joint, const JointData& data, const JointFrame& frame, float inverseH) {
-  joint.reaction = std::visit([&](const auto& typed) { return jointReaction(typed, frame, inverseH); }, data);
-  const bool over =
-      length(joint.reaction.force) > joint.breakForce || std::abs(joint.reaction.torque) > joint.breakTorque;
+JointReaction reactionOf(const JointData& data, float inverseH) {
+  return std::visit([&](const auto& typed) { return jointReaction(typed, inverseH); }, data);
+}
+
+bool breakable(const Joint& joint) {
+  return joint.breakForce < std::numeric_limits<float>::infinity() ||
+         joint.breakTorque < std::numeric_limits<float>::infinity();
+}
+
+bool updateBreak(Joint& joint, const JointReaction& reaction) {
+  const bool over = length(reaction.force) > joint.breakForce || std::abs(reaction.torque) > joint.breakTorque;
   const bool crossed = over && !joint.overBreakLimit;
   joint.overBreakLimit = over;
   return crossed;
 }
 
-void raiseBreak(WorldState& w, const Joint& joint) {
-  w.jointEvents.breaks.push_back({joint.id, length(joint.reaction.force), std::abs(joint.reaction.torque)});
+void raiseBreak(WorldState& w, const Joint& joint, const JointReaction& reaction) {
+  w.jointEvents.breaks.push_back({joint.id, length(reaction.force), std::abs(reaction.torque)});
 }
 
 void finishJoints(WorldState& w, const StepContext& context) {
   w.lastInverseH = context.inverseH;
-  // A sleeping joint still carries what it carried when it fell asleep.
   for (const std::uint32_t slot : w.solvedJoints) {
     Joint& joint = w.joints[slot];
-    if (updateReaction(joint, joint.data, joint.frame, context.inverseH)) {
-      raiseBreak(w, joint);
+    if (!breakable(joint)) {
+      continue;
+    }
+    const JointReaction reaction = reactionOf(joint.data, context.inverseH);
+    if (updateBreak(joint, reaction)) {
+      raiseBreak(w, joint, reaction);
     }
   }
 }

@@ -64,6 +64,12 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
     copy(d.colourJoints[c]);
   }
   d.jointColourStart[colourCount] = at;
+  d.breakableJoints.clear();
+  for (const std::uint32_t slot : w.solvedJoints) {
+    if (d.simOfJoint[slot] != noJointSim && breakable(w.joints[slot])) {
+      d.breakableJoints.push_back(slot);
+    }
+  }
   d.colouredJoints.assign(w.solvedJoints.begin(), w.solvedJoints.end());
   d.colouredBodies.assign(w.awakeBodies.begin(), w.awakeBodies.end());
   d.jointBodyColours = d.bodyColours;
@@ -82,25 +88,16 @@ void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& co
 
 void finishJointSims(WorldState& w, const StepContext& context) {
   w.lastInverseH = context.inverseH;
+  // Only breakable joints are looked at (the reactions are read when asked); their copies are
+  // in colour order, their events go out in slot order.
   ContactSolverData& d = *w.contactSolver;
-  const auto count = static_cast<std::uint32_t>(d.jointSims.size());
-  d.jointBreaks.resize(count);
-  w.parallelFor(count, minJointsPerTask, [&](std::uint32_t begin, std::uint32_t end) {
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const JointSim& sim = d.jointSims[k];
-      d.jointBreaks[k] = updateReaction(w.joints[sim.slot], sim.data, sim.frame, context.inverseH) ? 1 : 0;
-    }
-  });
-  // Break events in joint slot order, as the game would list its joints (a rare event: the
-  // sort sees a few).
-  const std::size_t first = w.jointEvents.breaks.size();
-  for (std::uint32_t k = 0; k < count; ++k) {
-    if (d.jointBreaks[k] != 0) {
-      raiseBreak(w, w.joints[d.jointSims[k].slot]);
+  for (const std::uint32_t slot : d.breakableJoints) {
+    Joint& joint = w.joints[slot];
+    const JointReaction reaction = reactionOf(d.jointSims[d.simOfJoint[slot]].data, context.inverseH);
+    if (updateBreak(joint, reaction)) {
+      raiseBreak(w, joint, reaction);
     }
   }
-  std::sort(w.jointEvents.breaks.begin() + static_cast<std::ptrdiff_t>(first), w.jointEvents.breaks.end(),
-            [](const JointBreakEvent& a, const JointBreakEvent& b) { return a.joint.index < b.joint.index; });
 }
 
 JointData& jointDataOf(WorldState& w, std::uint32_t slot) {

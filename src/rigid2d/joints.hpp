@@ -33,8 +33,7 @@ struct Joint {
   std::uint64_t userData = 0;
   JointId id;
   bool alive = false;
-  JointFrame frame;       ///< this step's solver view (valid while solved)
-  JointReaction reaction; ///< over the last step, N and N m
+  JointFrame frame; ///< this step's solver view (valid while solved)
 
   [[nodiscard]] JointType type() const noexcept { return static_cast<JointType>(data.index()); }
 };
@@ -70,11 +69,17 @@ void solveJoint(WorldState& w, std::uint32_t slot, const StepContext& context, b
 /// Every joint's warm start and solve, in joint slot order (the book's solver).
 void warmStartJoints(WorldState& w);
 void solveJoints(WorldState& w, const StepContext& context, bool useBias);
-/// The joint's reaction over the step from its data (N, N m); true when it has just gone over
-/// its break limits (a break event is due: raiseBreak, in slot order).
-bool updateReaction(Joint& joint, const JointData& data, const JointFrame& frame, float inverseH);
-void raiseBreak(WorldState& w, const Joint& joint);
-/// Reaction readouts and break events after the substeps, of joints solved in their slots.
+/// The force and torque on body B over the last substep of the joint's last solve (N, N m):
+/// its impulses times the substep rate. Read when asked, as Box2D v3's: a sleeping joint still
+/// carries what it carried when it fell asleep.
+[[nodiscard]] JointReaction reactionOf(const JointData& data, float inverseH);
+/// Whether the joint has a finite break force or torque (only those are checked each step).
+[[nodiscard]] bool breakable(const Joint& joint);
+/// Notes whether the reaction is over the joint's break limits; true when it has just gone over
+/// (a break event is due: raiseBreak, in slot order).
+bool updateBreak(Joint& joint, const JointReaction& reaction);
+void raiseBreak(WorldState& w, const Joint& joint, const JointReaction& reaction);
+/// Break events after the substeps, of joints solved in their slots.
 void finishJoints(WorldState& w, const StepContext& context);
 
 // contact_solver.cpp: the soft step keeps its joints' solver copies (JointSim) in colour order
@@ -90,7 +95,7 @@ void forgetJointSim(WorldState& w, std::uint32_t slot);
 void returnJointSims(WorldState& w);
 /// The copies dropped without a look (a snapshot just replaced every joint).
 void dropJointSims(WorldState& w);
-/// The soft step's reactions and break events, from the copies, on threads.
+/// The soft step's break events, from the copies of breakable joints.
 void finishJointSims(WorldState& w, const StepContext& context);
 
 } // namespace impetus::rigid2d::detail

@@ -59,7 +59,7 @@ void solveJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyStat
   });
 }
 
-JointReaction jointReaction(const MotorJoint& joint, const JointFrame&, float inverseH) {
+JointReaction jointReaction(const MotorJoint& joint, float inverseH) {
   return {joint.linear.impulse * inverseH, joint.angular.impulse * inverseH};
 }
 

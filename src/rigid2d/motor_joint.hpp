@@ -27,6 +27,6 @@ void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<Body
 void solveJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).
-[[nodiscard]] JointReaction jointReaction(const MotorJoint& joint, const JointFrame& frame, float inverseH);
+[[nodiscard]] JointReaction jointReaction(const MotorJoint& joint, float inverseH);
 
 } // namespace impetus::rigid2d::detail

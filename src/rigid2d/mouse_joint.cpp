@@ -50,7 +50,7 @@ void solveJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyStat
   });
 }
 
-JointReaction jointReaction(const MouseJoint& joint, const JointFrame&, float inverseH) {
+JointReaction jointReaction(const MouseJoint& joint, float inverseH) {
   return {joint.linear.impulse * inverseH, joint.angular.impulse * inverseH};
 }
 

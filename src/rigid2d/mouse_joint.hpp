@@ -29,6 +29,6 @@ void warmStartJoint(MouseJoint& joint, const JointFrame& frame, std::vector<Body
 void solveJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).
-[[nodiscard]] JointReaction jointReaction(const MouseJoint& joint, const JointFrame& frame, float inverseH);
+[[nodiscard]] JointReaction jointReaction(const MouseJoint& joint, float inverseH);
 
 } // namespace impetus::rigid2d::detail

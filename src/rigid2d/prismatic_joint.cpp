@@ -76,7 +76,7 @@ void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<Body
   });
 }
 
-JointReaction jointReaction(const PrismaticJoint& joint, const JointFrame&, float inverseH) {
+JointReaction jointReaction(const PrismaticJoint& joint, float inverseH) {
   // Force on B: the normal row along perp(axis) plus every axial row along the axis (the axis as
   // the last solve saw it). Torque: the angular row only (the torque that holds the relative
   // angle; the moments of the forces about B's centre are not included), as for the revolute joint.

@@ -41,6 +41,6 @@ void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<
 void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).
-[[nodiscard]] JointReaction jointReaction(const PrismaticJoint& joint, const JointFrame& frame, float inverseH);
+[[nodiscard]] JointReaction jointReaction(const PrismaticJoint& joint, float inverseH);
 
 } // namespace impetus::rigid2d::detail

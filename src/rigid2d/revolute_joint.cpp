@@ -70,7 +70,7 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
   });
 }
 
-JointReaction jointReaction(const RevoluteJoint& joint, const JointFrame&, float inverseH) {
+JointReaction jointReaction(const RevoluteJoint& joint, float inverseH) {
   return {joint.point.impulse * inverseH, axialImpulse(joint) * inverseH};
 }
 

@@ -23,6 +23,6 @@ void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<B
 void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate).
-[[nodiscard]] JointReaction jointReaction(const RevoluteJoint& joint, const JointFrame& frame, float inverseH);
+[[nodiscard]] JointReaction jointReaction(const RevoluteJoint& joint, float inverseH);
 
 } // namespace impetus::rigid2d::detail

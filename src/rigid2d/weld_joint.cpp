@@ -42,7 +42,7 @@ void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState
   });
 }
 
-JointReaction jointReaction(const WeldJoint& joint, const JointFrame&, float inverseH) {
+JointReaction jointReaction(const WeldJoint& joint, float inverseH) {
   return {joint.point.impulse * inverseH, joint.angle.impulse * inverseH};
 }
 

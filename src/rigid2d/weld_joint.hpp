@@ -23,6 +23,6 @@ void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState
                 const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep (impulses times the substep rate). The
 /// torque is the joint's couple on B (its moment about the anchor), the force acts at the anchor.
-[[nodiscard]] JointReaction jointReaction(const WeldJoint& joint, const JointFrame& frame, float inverseH);
+[[nodiscard]] JointReaction jointReaction(const WeldJoint& joint, float inverseH);
 
 } // namespace impetus::rigid2d::detail

@@ -47,7 +47,7 @@ void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyStat
   });
 }
 
-JointReaction jointReaction(const WheelJoint& joint, const JointFrame&, float inverseH) {
+JointReaction jointReaction(const WheelJoint& joint, float inverseH) {
   // Force on B: the line row along perp(axis) plus the suspension and limits along the axis (the
   // axis as the last solve saw it). Torque: the motor's (the free spin transmits nothing else).
   const float axial = joint.spring.impulse + joint.limit.lowerImpulse - joint.limit.upperImpulse;

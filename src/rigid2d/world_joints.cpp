@@ -324,8 +324,14 @@ Vec2f World::jointAnchorA(JointId id) const { return worldAnchors(*impl_, impl_-
 Vec2f World::jointAnchorB(JointId id) const { return worldAnchors(*impl_, impl_->joint(id)).second; }
 BodyId World::jointBodyA(JointId id) const { return impl_->bodies[impl_->joint(id).bodyA].id; }
 BodyId World::jointBodyB(JointId id) const { return impl_->bodies[impl_->joint(id).bodyB].id; }
-Vec2f World::jointReactionForce(JointId id) const { return impl_->joint(id).reaction.force; }
-float World::jointReactionTorque(JointId id) const { return impl_->joint(id).reaction.torque; }
+Vec2f World::jointReactionForce(JointId id) const {
+  static_cast<void>(impl_->joint(id)); // refuses an id that is not live
+  return detail::reactionOf(detail::jointDataOf(*impl_, id.index), impl_->lastInverseH).force;
+}
+float World::jointReactionTorque(JointId id) const {
+  static_cast<void>(impl_->joint(id));
+  return detail::reactionOf(detail::jointDataOf(*impl_, id.index), impl_->lastInverseH).torque;
+}
 const JointEvents& World::jointEvents() const noexcept { return impl_->jointEvents; }
 
 namespace detail {
