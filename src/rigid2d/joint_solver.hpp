@@ -57,10 +57,10 @@ struct JointFrame {
   return useBias ? f.softness : rigidRow;
 }
 
-/// The angle of qB relative to qA, in (-pi, pi].
+/// The angle of qB relative to qA, in [-pi, pi] (portableAtan2: the same bits everywhere).
 [[nodiscard]] inline float relativeAngle(const Rot2f& qB, const Rot2f& qA) {
   const Rot2f q = invMul(qA, qB);
-  return std::atan2(q.s, q.c);
+  return portableAtan2(q.s, q.c);
 }
 
 /// An angle wrapped into (-pi, pi].
