@@ -9,34 +9,39 @@ namespace impetus::bench {
 struct Box2D3Scene::Impl {
   b2WorldId world{};
   std::vector<b2BodyId> bodies;
+  bool enableSleep = false;
+  float sleepThreshold = 0.05f;
+  std::vector<std::vector<b2BodyId>> groups; ///< spawned by the scene's script
 };
 
-Box2D3Scene::Box2D3Scene(const Rigid2dScene& scene, int workers, bool continuous) : impl_(std::make_unique<Impl>()) {
-  b2WorldDef wd = b2DefaultWorldDef();
-  wd.gravity = {scene.gravity.x, scene.gravity.y};
-  wd.enableSleep = scene.enableSleep;
-  wd.enableContinuous = continuous;
-  wd.workerCount = workers; // above 1: Box2D v3's own threads and scheduler
-  impl_->world = b2CreateWorld(&wd);
-  impl_->bodies.reserve(scene.bodies.size());
-  for (const SceneBody& b : scene.bodies) {
+namespace {
+
+/// Adds bodies with their shapes and joints to a v3 world; their ids, in order.
+std::vector<b2BodyId> addContent(b2WorldId world, const SceneContent& content, bool enableSleep, float sleepThreshold) {
+  std::vector<b2BodyId> bodies;
+  bodies.reserve(content.bodies.size());
+  for (const SceneBody& b : content.bodies) {
     b2BodyDef bd = b2DefaultBodyDef();
     bd.type = peerBodyType(b.type, b2_staticBody, b2_kinematicBody, b2_dynamicBody);
     bd.position = {b.position.x, b.position.y};
     bd.linearVelocity = {b.linearVelocity.x, b.linearVelocity.y};
     bd.angularVelocity = b.angularVelocity;
+    bd.linearDamping = b.linearDamping;
     bd.isBullet = b.bullet;
-    bd.enableSleep = scene.enableSleep;
+    bd.enableSleep = enableSleep;
+    bd.sleepThreshold = sleepThreshold;
     bd.isAwake = b.awake;
-    impl_->bodies.push_back(b2CreateBody(impl_->world, &bd));
+    bodies.push_back(b2CreateBody(world, &bd));
   }
-  for (const SceneShape& s : scene.shapes) {
+  for (const SceneShape& s : content.shapes) {
     b2ShapeDef sd = b2DefaultShapeDef();
     sd.density = s.density;
-    sd.material.friction = sceneFriction;
+    sd.material.friction = s.friction;
     sd.material.restitution = 0.0f;
     sd.filter.groupIndex = s.group;
-    const b2BodyId body = impl_->bodies[s.body];
+    sd.filter.categoryBits = s.categoryBits;
+    sd.filter.maskBits = s.maskBits;
+    const b2BodyId body = bodies[s.body];
     switch (s.kind) {
     case SceneShape::Kind::circle: {
       const b2Circle circle{{s.center.x, s.center.y}, s.radius};
@@ -48,6 +53,21 @@ Box2D3Scene::Box2D3Scene(const Rigid2dScene& scene, int workers, bool continuous
       b2CreateSegmentShape(body, &sd, &segment);
       break;
     }
+    case SceneShape::Kind::capsule: {
+      const b2Capsule capsule{{s.point1.x, s.point1.y}, {s.point2.x, s.point2.y}, s.radius};
+      b2CreateCapsuleShape(body, &sd, &capsule);
+      break;
+    }
+    case SceneShape::Kind::polygon: {
+      std::vector<b2Vec2> points;
+      for (const Vec2f& p : s.points) {
+        points.push_back({p.x, p.y});
+      }
+      const b2Hull hull = b2ComputeHull(points.data(), static_cast<int>(points.size()));
+      const b2Polygon polygon = b2MakePolygon(&hull, s.radius);
+      b2CreatePolygonShape(body, &sd, &polygon);
+      break;
+    }
     case SceneShape::Kind::box: {
       const b2Polygon box = b2MakeOffsetBox(s.halfWidth, s.halfHeight, {s.center.x, s.center.y}, b2MakeRot(s.angle));
       b2CreatePolygonShape(body, &sd, &box);
@@ -55,18 +75,50 @@ Box2D3Scene::Box2D3Scene(const Rigid2dScene& scene, int workers, bool continuous
     }
     }
   }
-  for (const SceneJoint& j : scene.joints) {
-    // The scene's bodies start unrotated: the anchor's local point is its offset from the origin.
-    const SceneBody& a = scene.bodies[j.bodyA];
-    const SceneBody& b = scene.bodies[j.bodyB];
+  for (const SceneJoint& j : content.joints) {
+    // The scene's bodies start unrotated: the anchor's local point is its offset from the origin;
+    // the reference angle is frame A's rotation (v3's joint angle is frame B's relative to A's).
+    const SceneBody& a = content.bodies[j.bodyA];
+    const SceneBody& b = content.bodies[j.bodyB];
     b2RevoluteJointDef jd = b2DefaultRevoluteJointDef();
-    jd.base.bodyIdA = impl_->bodies[j.bodyA];
-    jd.base.bodyIdB = impl_->bodies[j.bodyB];
+    jd.base.bodyIdA = bodies[j.bodyA];
+    jd.base.bodyIdB = bodies[j.bodyB];
     jd.base.localFrameA.p = {j.anchor.x - a.position.x, j.anchor.y - a.position.y};
+    jd.base.localFrameA.q = b2MakeRot(j.referenceAngle);
     jd.base.localFrameB.p = {j.anchor.x - b.position.x, j.anchor.y - b.position.y};
     setLimitAndMotor(j, jd);
-    b2CreateRevoluteJoint(impl_->world, &jd);
+    jd.enableSpring = j.enableSpring;
+    jd.hertz = j.hertz;
+    jd.dampingRatio = j.dampingRatio;
+    b2CreateRevoluteJoint(world, &jd);
   }
+  return bodies;
+}
+
+} // namespace
+
+Box2D3Scene::Box2D3Scene(const Rigid2dScene& scene, int workers, bool continuous) : impl_(std::make_unique<Impl>()) {
+  b2WorldDef wd = b2DefaultWorldDef();
+  wd.gravity = {scene.gravity.x, scene.gravity.y};
+  wd.enableSleep = scene.enableSleep;
+  wd.enableContinuous = continuous;
+  wd.workerCount = workers; // above 1: Box2D v3's own threads and scheduler
+  impl_->world = b2CreateWorld(&wd);
+  impl_->enableSleep = scene.enableSleep;
+  impl_->sleepThreshold = scene.sleepThreshold;
+  impl_->bodies = addContent(impl_->world, scene, scene.enableSleep, scene.sleepThreshold);
+}
+
+std::uint32_t Box2D3Scene::spawn(const SceneContent& group) {
+  impl_->groups.push_back(addContent(impl_->world, group, impl_->enableSleep, impl_->sleepThreshold));
+  return static_cast<std::uint32_t>(impl_->groups.size() - 1);
+}
+
+void Box2D3Scene::destroy(std::uint32_t group) {
+  for (const b2BodyId body : impl_->groups[group]) {
+    b2DestroyBody(body);
+  }
+  impl_->groups[group].clear();
 }
 
 Box2D3Scene::~Box2D3Scene() { b2DestroyWorld(impl_->world); }

@@ -20,16 +20,19 @@ namespace impetus::bench {
 /// Box2D v3's defaults that impetus-bench uses: substeps per step.
 inline constexpr int box2d3Substeps = 4;
 
-/// A scene built in a Box2D v3 world; body i is the scene's body i.
-class Box2D3Scene {
+/// A scene built in a Box2D v3 world; body i is the scene's body i. Its script's groups are
+/// spawned and destroyed through it.
+class Box2D3Scene final : public SceneSpawner {
 public:
   /// `workers`: Box2D v3's worker threads (1: single-threaded; more: its own scheduler).
   /// `continuous`: its continuous collision (its default: on).
   Box2D3Scene(const Rigid2dScene& scene, int workers, bool continuous = true);
-  ~Box2D3Scene();
+  ~Box2D3Scene() override;
   Box2D3Scene(const Box2D3Scene&) = delete;
   Box2D3Scene& operator=(const Box2D3Scene&) = delete;
 
+  std::uint32_t spawn(const SceneContent& group) override;
+  void destroy(std::uint32_t group) override;
   /// One step of sceneTimeStep with box2d3Substeps substeps.
   void step();
   /// Height of body i's origin, m.

@@ -1,6 +1,10 @@
 // The 2D benchmark scenes built in Box2D 2.4.1 (see box2d_scenes.hpp).
 #include "box2d_scenes.hpp"
 
+#include <impetus/error.hpp>
+
+#include <string>
+
 namespace impetus::bench {
 
 Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
@@ -22,9 +26,11 @@ Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
   for (const SceneShape& s : scene.shapes) {
     b2FixtureDef fd;
     fd.density = s.density;
-    fd.friction = sceneFriction;
+    fd.friction = s.friction;
     fd.restitution = 0.0f;
     fd.filter.groupIndex = static_cast<int16_t>(s.group);
+    fd.filter.categoryBits = static_cast<uint16_t>(s.categoryBits); // 2.4.1's filters have 16 bits
+    fd.filter.maskBits = static_cast<uint16_t>(s.maskBits);
     b2PolygonShape box;
     b2CircleShape circle;
     b2EdgeShape edge;
@@ -42,6 +48,9 @@ Box2DScene buildBox2DScene(const Rigid2dScene& scene, bool continuous) {
       box.SetAsBox(s.halfWidth, s.halfHeight, b2Vec2(s.center.x, s.center.y), s.angle);
       fd.shape = &box;
       break;
+    case SceneShape::Kind::capsule:
+    case SceneShape::Kind::polygon:
+      throw Error("scene", "Box2D 2.4.1 has no capsules or rounded polygons (scene '" + scene.name + "')");
     }
     built.bodies[s.body]->CreateFixture(&fd);
   }

@@ -8,7 +8,7 @@ namespace impetus::bench::parts {
 
 using rigid2d::BodyType;
 
-inline std::uint32_t addBody(Rigid2dScene& scene, BodyType type, const Vec2f& position, float angularVelocity = 0.0f) {
+inline std::uint32_t addBody(SceneContent& scene, BodyType type, const Vec2f& position, float angularVelocity = 0.0f) {
   SceneBody b;
   b.type = type;
   b.position = position;
@@ -17,7 +17,7 @@ inline std::uint32_t addBody(Rigid2dScene& scene, BodyType type, const Vec2f& po
   return static_cast<std::uint32_t>(scene.bodies.size() - 1);
 }
 
-inline void addBox(Rigid2dScene& scene, std::uint32_t body, float halfWidth, float halfHeight, const Vec2f& center = {},
+inline void addBox(SceneContent& scene, std::uint32_t body, float halfWidth, float halfHeight, const Vec2f& center = {},
                    float angle = 0.0f) {
   SceneShape s;
   s.kind = SceneShape::Kind::box;
@@ -29,7 +29,7 @@ inline void addBox(Rigid2dScene& scene, std::uint32_t body, float halfWidth, flo
   scene.shapes.push_back(s);
 }
 
-inline void addCircle(Rigid2dScene& scene, std::uint32_t body, float radius, std::int32_t group = 0,
+inline void addCircle(SceneContent& scene, std::uint32_t body, float radius, std::int32_t group = 0,
                       const Vec2f& center = {}) {
   SceneShape s;
   s.kind = SceneShape::Kind::circle;
@@ -41,7 +41,7 @@ inline void addCircle(Rigid2dScene& scene, std::uint32_t body, float radius, std
 }
 
 /// A two-sided segment from point1 to point2 in the body frame (static bodies only).
-inline void addSegment(Rigid2dScene& scene, std::uint32_t body, const Vec2f& point1, const Vec2f& point2) {
+inline void addSegment(SceneContent& scene, std::uint32_t body, const Vec2f& point1, const Vec2f& point2) {
   SceneShape s;
   s.kind = SceneShape::Kind::segment;
   s.body = body;
@@ -50,7 +50,7 @@ inline void addSegment(Rigid2dScene& scene, std::uint32_t body, const Vec2f& poi
   scene.shapes.push_back(s);
 }
 
-inline void addJoint(Rigid2dScene& scene, std::uint32_t a, std::uint32_t b, const Vec2f& anchor, float lower = 0.0f,
+inline void addJoint(SceneContent& scene, std::uint32_t a, std::uint32_t b, const Vec2f& anchor, float lower = 0.0f,
                      float upper = 0.0f) {
   SceneJoint j;
   j.bodyA = a;

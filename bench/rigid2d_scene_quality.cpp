@@ -15,7 +15,7 @@ namespace {
 
 using rigid2d::BodyType;
 
-using Geometry = std::variant<rigid2d::Polygon, rigid2d::Circle, rigid2d::Segment>;
+using Geometry = std::variant<rigid2d::Polygon, rigid2d::Circle, rigid2d::Segment, rigid2d::Capsule>;
 
 Geometry geometryOf(const SceneShape& s) {
   switch (s.kind) {
@@ -23,6 +23,10 @@ Geometry geometryOf(const SceneShape& s) {
     return rigid2d::Circle{s.center, s.radius};
   case SceneShape::Kind::segment:
     return rigid2d::Segment{s.point1, s.point2};
+  case SceneShape::Kind::capsule:
+    return rigid2d::Capsule{s.point1, s.point2, s.radius};
+  case SceneShape::Kind::polygon:
+    return rigid2d::makePolygon(s.points, s.radius);
   case SceneShape::Kind::box:
     break;
   }
@@ -39,7 +43,13 @@ float separation(const rigid2d::Manifold& m) {
 }
 
 float separation(const Geometry& a, const Transform2f& xfA, const Geometry& b, const Transform2f& xfB) {
-  // A segment as the narrowphase sees it: a two-vertex polygon.
+  // A segment or capsule as the narrowphase sees it: a two-vertex polygon (rounded).
+  if (const auto* ca = std::get_if<rigid2d::Capsule>(&a)) {
+    return separation(Geometry{rigid2d::asPolygon(*ca)}, xfA, b, xfB);
+  }
+  if (const auto* cb = std::get_if<rigid2d::Capsule>(&b)) {
+    return separation(a, xfA, Geometry{rigid2d::asPolygon(*cb)}, xfB);
+  }
   if (const auto* sa = std::get_if<rigid2d::Segment>(&a)) {
     return separation(Geometry{rigid2d::asPolygon(*sa)}, xfA, b, xfB);
   }
@@ -62,6 +72,43 @@ float separation(const Geometry& a, const Transform2f& xfA, const Geometry& b, c
 
 } // namespace
 
+std::vector<rigid2d::BodyId> addToImpetusWorld(rigid2d::World& world, const SceneContent& content) {
+  std::vector<rigid2d::BodyId> bodies;
+  bodies.reserve(content.bodies.size());
+  for (const SceneBody& b : content.bodies) {
+    rigid2d::BodyDef bd;
+    bd.type = b.type;
+    bd.position = b.position;
+    bd.angularVelocity = b.angularVelocity;
+    bd.linearVelocity = b.linearVelocity;
+    bd.linearDamping = b.linearDamping;
+    bd.bullet = b.bullet;
+    bd.isAwake = b.awake;
+    bodies.push_back(world.createBody(bd));
+  }
+  for (const SceneShape& s : content.shapes) {
+    rigid2d::ShapeDef sd;
+    sd.friction = s.friction;
+    sd.density = s.density;
+    sd.filter = {s.categoryBits, s.maskBits, s.group};
+    std::visit([&](const auto& shape) { world.createShape(bodies[s.body], sd, shape); }, geometryOf(s));
+  }
+  for (const SceneJoint& j : content.joints) {
+    rigid2d::RevoluteJointDef jd;
+    jd.bodyA = bodies[j.bodyA];
+    jd.bodyB = bodies[j.bodyB];
+    jd.localAnchorA = j.anchor - content.bodies[j.bodyA].position; // bodies start unrotated
+    jd.localAnchorB = j.anchor - content.bodies[j.bodyB].position;
+    jd.referenceAngle = j.referenceAngle;
+    setLimitAndMotor(j, jd);
+    jd.enableSpring = j.enableSpring;
+    jd.hertz = j.hertz;
+    jd.dampingRatio = j.dampingRatio;
+    world.createJoint(jd);
+  }
+  return bodies;
+}
+
 ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings& settings) {
   rigid2d::WorldDef def;
   def.taskRunner = settings.runner;
@@ -71,36 +118,38 @@ ImpetusScene buildImpetusScene(const Rigid2dScene& scene, const ImpetusSettings&
   def.simd = settings.simd;
   def.gravity = scene.gravity;
   def.enableSleep = settings.enableSleep || scene.enableSleep;
+  def.sleepLinearTolerance = scene.sleepThreshold;
   ImpetusScene built{rigid2d::World(def), {}};
-  built.bodies.reserve(scene.bodies.size());
-  for (const SceneBody& b : scene.bodies) {
-    rigid2d::BodyDef bd;
-    bd.type = b.type;
-    bd.position = b.position;
-    bd.angularVelocity = b.angularVelocity;
-    bd.linearVelocity = b.linearVelocity;
-    bd.bullet = b.bullet;
-    bd.isAwake = b.awake;
-    built.bodies.push_back(built.world.createBody(bd));
-  }
-  rigid2d::ShapeDef sd;
-  sd.friction = sceneFriction;
-  for (const SceneShape& s : scene.shapes) {
-    const rigid2d::BodyId body = built.bodies[s.body];
-    sd.density = s.density;
-    sd.filter.group = s.group;
-    std::visit([&](const auto& shape) { built.world.createShape(body, sd, shape); }, geometryOf(s));
-  }
-  for (const SceneJoint& j : scene.joints) {
-    rigid2d::RevoluteJointDef jd;
-    jd.bodyA = built.bodies[j.bodyA];
-    jd.bodyB = built.bodies[j.bodyB];
-    jd.localAnchorA = j.anchor - scene.bodies[j.bodyA].position; // bodies start unrotated
-    jd.localAnchorB = j.anchor - scene.bodies[j.bodyB].position;
-    setLimitAndMotor(j, jd);
-    built.world.createJoint(jd);
-  }
+  built.bodies = addToImpetusWorld(built.world, scene);
   return built;
+}
+
+std::uint32_t ImpetusSpawner::spawn(const SceneContent& group) {
+  groups_.push_back(addToImpetusWorld(world_, group));
+  return static_cast<std::uint32_t>(groups_.size() - 1);
+}
+
+void ImpetusSpawner::destroy(std::uint32_t group) {
+  for (const rigid2d::BodyId b : groups_[group]) {
+    world_.destroyBody(b);
+  }
+  groups_[group].clear();
+}
+
+std::size_t ImpetusSpawner::liveBodies() const {
+  std::size_t n = 0;
+  for (const std::vector<rigid2d::BodyId>& g : groups_) {
+    n += g.size();
+  }
+  return n;
+}
+
+std::vector<rigid2d::BodyId> ImpetusSpawner::bodies() const {
+  std::vector<rigid2d::BodyId> out;
+  for (const std::vector<rigid2d::BodyId>& g : groups_) {
+    out.insert(out.end(), g.begin(), g.end());
+  }
+  return out;
 }
 
 std::vector<Transform2f> bodyTransforms(const ImpetusScene& built) {

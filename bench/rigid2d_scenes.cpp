@@ -183,8 +183,9 @@ Rigid2dScene ragdollScene(int columns, int rows) {
 }
 
 std::vector<std::string> rigid2dSceneNames() {
-  return {"large_pyramid", "many_pyramids",     "tumbler",     "smash",          "joint_grid",      "ragdolls",
-          "pyramid_row",   "kinematic_tumbler", "smash_awake", "circle_rain_1k", "circle_rain_10k", "circle_rain_100k"};
+  return {"large_pyramid",   "many_pyramids", "tumbler",           "smash",       "joint_grid",     "rain",
+          "ragdolls",        "pyramid_row",   "kinematic_tumbler", "smash_awake", "circle_rain_1k", "circle_rain_10k",
+          "circle_rain_100k"};
 }
 
 Rigid2dScene makeRigid2dScene(std::string_view name) {
@@ -202,6 +203,9 @@ Rigid2dScene makeRigid2dScene(std::string_view name) {
   }
   if (name == "joint_grid") {
     return jointGridScene();
+  }
+  if (name == "rain") {
+    return rainScene();
   }
   if (name == "ragdolls") {
     return ragdollScene();
@@ -231,7 +235,7 @@ Rigid2dScene makeRigid2dScene(std::string_view name) {
     }
   }
   throw Error("scene", "unknown 2D benchmark scene '" + std::string(name) +
-                           "' (large_pyramid, many_pyramids, tumbler, smash, joint_grid, ragdolls, pyramid_row, "
+                           "' (large_pyramid, many_pyramids, tumbler, smash, joint_grid, rain, ragdolls, pyramid_row, "
                            "kinematic_tumbler, smash_awake, circle_rain_N or circle_rain_Nk: circle_rain_1k, "
                            "circle_rain_10k, circle_rain_100k)");
 }

@@ -5,7 +5,8 @@
 // bench/box2d3_scenes.hpp from the same description, so every engine gets identical geometry.
 //
 // Where a name is also a scene of Box2D v3's own benchmark (large_pyramid, many_pyramids,
-// tumbler, smash, joint_grid), the scene is v3's, like for like (box2d3_benchmark_scenes.cpp);
+// tumbler, smash, joint_grid, rain), the scene is v3's, like for like (box2d3_benchmark_scenes.cpp,
+// rain_scene.cpp);
 // Impetus' earlier variants are kept under names of their own (pyramid_row, kinematic_tumbler,
 // smash_awake, circle_rain_N).
 //
@@ -20,6 +21,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -27,21 +29,27 @@
 
 namespace impetus::bench {
 
-inline constexpr float sceneDensity = 1.0f; ///< kg/m^2, unless a shape says otherwise
+inline constexpr float sceneDensity = 1.0f;  ///< kg/m^2, unless a shape says otherwise
+inline constexpr float sceneFriction = 0.6f; ///< unless a shape says otherwise
 
-/// A shape of a scene body, in the body frame: a box (half-widths, centre, angle) or a circle.
+/// A shape of a scene body, in the body frame: a box (half-widths, centre, angle), a circle, a
+/// segment, a capsule or a rounded convex polygon.
 struct SceneShape {
-  enum class Kind { box, circle, segment };
+  enum class Kind { box, circle, segment, capsule, polygon };
   Kind kind = Kind::box;
   std::uint32_t body = 0; ///< index into Rigid2dScene::bodies
   Vec2f center;           ///< box or circle centre in the body frame, m
   float halfWidth = 0.0f; ///< box, m
   float halfHeight = 0.0f;
-  float angle = 0.0f;           ///< box rotation in the body frame, rad
-  float radius = 0.0f;          ///< circle, m
-  Vec2f point1, point2;         ///< segment (two-sided, on a static body), body frame, m
-  float density = sceneDensity; ///< kg/m^2
-  std::int32_t group = 0;       ///< collision group (negative: shapes of the group never collide)
+  float angle = 0.0f;             ///< box rotation in the body frame, rad
+  float radius = 0.0f;            ///< circle, capsule, polygon's rounding, m
+  Vec2f point1, point2;           ///< segment (two-sided, on a static body) or the capsule's centres, body frame, m
+  std::vector<Vec2f> points;      ///< polygon: its hull's points (3 to 8), body frame, m
+  float density = sceneDensity;   ///< kg/m^2
+  float friction = sceneFriction; ///< Coulomb coefficient
+  std::int32_t group = 0;         ///< collision group (negative: shapes of the group never collide)
+  std::uint64_t categoryBits = 1; ///< collision filter: A and B collide when each one's category is in the other's mask
+  std::uint64_t maskBits = ~std::uint64_t{0};
 };
 
 /// A revolute joint between two bodies at a world point (the scene's initial pose), with
@@ -55,7 +63,11 @@ struct SceneJoint {
   float upperAngle = 0.0f; ///< rad
   bool enableMotor = false;
   float motorSpeed = 0.0f;     ///< rad/s of B relative to A
-  float maxMotorTorque = 0.0f; ///< N m
+  float maxMotorTorque = 0.0f; ///< N m (with motorSpeed 0: the pin's friction, as v3's ragdolls)
+  float referenceAngle = 0.0f; ///< rad: angleB - angleA at joint angle 0 (v3: local frame A's rotation)
+  bool enableSpring = false;   ///< toward joint angle 0
+  float hertz = 0.0f;          ///< Hz
+  float dampingRatio = 0.0f;
 };
 
 struct SceneBody {
@@ -65,6 +77,7 @@ struct SceneBody {
   Vec2f linearVelocity;         ///< m/s (the smash's projectile)
   bool bullet = false;          ///< continuous collision against dynamic bodies (the smash's projectile)
   bool awake = true;            ///< false: starts asleep (v3's smash), where the scene sleeps
+  float linearDamping = 0.0f;   ///< 1/s
 };
 
 /// A scene body's type in a peer engine's own enumeration (Box2D 2.4.1's and v3's b2BodyType
@@ -93,22 +106,43 @@ template <class RevoluteDef> void setLimitAndMotor(const SceneJoint& j, Revolute
   def.maxMotorTorque = j.maxMotorTorque;
 }
 
-/// A scene as plain data: what every engine builds.
-struct Rigid2dScene {
-  std::string name;
+/// Bodies with their shapes and joints: a whole scene's, or a group a scene spawns while it runs
+/// (a ragdoll), its indices its own.
+struct SceneContent {
   std::vector<SceneBody> bodies;
   std::vector<SceneShape> shapes; ///< grouped by body, in body order
   std::vector<SceneJoint> joints;
+};
+
+/// What each engine offers a scene's script: spawn a group of bodies (its handle back) and
+/// destroy one (its bodies, and their joints with them).
+class SceneSpawner {
+public:
+  virtual ~SceneSpawner() = default;
+  virtual std::uint32_t spawn(const SceneContent& group) = 0;
+  virtual void destroy(std::uint32_t group) = 0;
+};
+
+/// A scene's doings between steps: called before step `step` (from 0) with the engine's spawner.
+using SceneScript = std::function<void(int step, SceneSpawner& spawner)>;
+
+/// A scene as plain data: what every engine builds.
+struct Rigid2dScene : SceneContent {
+  std::string name;
   /// Bodies whose sinking is the quality figure (the top box of each pyramid); may be empty.
   std::vector<std::uint32_t> tops;
-  int defaultSteps = 500;      ///< steps of 1/60 s the benchmark runs by default
-  Vec2f gravity{0.0f, -10.0f}; ///< m/s^2 (zero for the smashes)
-  bool enableSleep = false;    ///< bodies may sleep, in every engine (v3's smash and tumbler)
+  int defaultSteps = 500;       ///< steps of 1/60 s the benchmark runs by default
+  Vec2f gravity{0.0f, -10.0f};  ///< m/s^2 (zero for the smashes)
+  bool enableSleep = false;     ///< bodies may sleep, in every engine (v3's smash, tumbler and rain)
+  float sleepThreshold = 0.05f; ///< m/s a body must stay under to sleep (v3's default; Impetus': sleepLinearTolerance)
+  /// Makes the scene's script for one run (each run starts it afresh); empty: the scene runs as built.
+  std::function<SceneScript()> makeScript;
+  /// Whether Box2D 2.4.1 can build it (it has no capsules or rounded polygons).
+  bool box2d241 = true;
 };
 
 inline constexpr float sceneTimeStep = 1.0f / 60.0f; ///< s
-inline constexpr float sceneFriction = 0.6f;
-inline constexpr Vec2f sceneGravity{0.0f, -10.0f}; ///< m/s^2
+inline constexpr Vec2f sceneGravity{0.0f, -10.0f};   ///< m/s^2
 
 /// Half-size of the pyramids' boxes, m.
 inline constexpr float pyramidBoxHalfSize = 0.5f;
@@ -181,6 +215,23 @@ inline constexpr int smashRows = 80;
 inline constexpr int jointGridSize = 100;
 [[nodiscard]] Rigid2dScene jointGridScene(int grid = jointGridSize);
 
+/// "rain" (Box2D v3's): ragdolls rain onto five floors, each a row of 501 static boxes of
+/// 0.5 m side (one static body), 45 m apart. Every 8 steps a column of five groups (one above
+/// each floor) of rainGroupSize ragdolls 0.5 m apart is spawned 40 m above its floor; once
+/// rainColumns columns stand, each new column destroys the oldest first. A ragdoll is v3's
+/// human: 11 capsule bones (rounded-polygon feet) joined by revolute joints with limits, a
+/// spring (5 Hz, damping ratio 0.5) and pin friction; the ragdolls of one group's same place
+/// never collide with each other (v3's groups), nor do feet with ragdolls. Bodies may sleep
+/// (0.1 m/s). 1000 steps. Box2D 2.4.1 has no capsules: not run there.
+inline constexpr int rainColumns = 40;
+inline constexpr int rainFloors = 5;
+inline constexpr int rainGroupSize = 5;
+inline constexpr int rainSpawnInterval = 8; ///< steps
+[[nodiscard]] Rigid2dScene rainScene();
+/// One of v3's ragdolls (its human at scale 1) with its feet at `feet`; its shapes in
+/// collision group `group` (negative: the ragdoll's bones never collide).
+[[nodiscard]] SceneContent humanRagdoll(const Vec2f& feet, std::int32_t group);
+
 /// "ragdolls": `columns` x `rows` ragdolls of 9 boxes and a circle head joined by 9 revolute
 /// joints with limits (elbows, knees, shoulders, hips, neck), dropped into an open box. 500 steps.
 inline constexpr int ragdollColumns = 20;
@@ -188,7 +239,7 @@ inline constexpr int ragdollRows = 15;
 [[nodiscard]] Rigid2dScene ragdollScene(int columns = ragdollColumns, int rows = ragdollRows);
 
 /// Scene names, in the benchmark's order: Box2D v3's (large_pyramid, many_pyramids, tumbler,
-/// smash, joint_grid), then Impetus' own (ragdolls, pyramid_row, kinematic_tumbler,
+/// smash, joint_grid, rain), then Impetus' own (ragdolls, pyramid_row, kinematic_tumbler,
 /// smash_awake, circle_rain_1k, circle_rain_10k, circle_rain_100k).
 [[nodiscard]] std::vector<std::string> rigid2dSceneNames();
 /// The scene of that name (also circle_rain_N and circle_rain_Nk for N or N thousand circles);
@@ -201,6 +252,24 @@ struct ImpetusScene {
   rigid2d::World world;
   std::vector<rigid2d::BodyId> bodies;
 };
+/// A scene's script's spawner in an Impetus world.
+class ImpetusSpawner final : public SceneSpawner {
+public:
+  explicit ImpetusSpawner(rigid2d::World& world) : world_(world) {}
+  std::uint32_t spawn(const SceneContent& group) override;
+  void destroy(std::uint32_t group) override;
+  /// Bodies of the groups spawned and not destroyed.
+  [[nodiscard]] std::size_t liveBodies() const;
+  /// Every live spawned body, group after group.
+  [[nodiscard]] std::vector<rigid2d::BodyId> bodies() const;
+
+private:
+  rigid2d::World& world_;
+  std::vector<std::vector<rigid2d::BodyId>> groups_;
+};
+/// Adds bodies with their shapes and joints to an Impetus world (the scene's sleep threshold
+/// applies to the world); their ids, in order.
+std::vector<rigid2d::BodyId> addToImpetusWorld(rigid2d::World& world, const SceneContent& content);
 /// Solver settings a benchmark run may change (the defaults are WorldDef's) and the task runner
 /// (optional, not owned) for the world's parallel loops. Sleeping is off unlike WorldDef's
 /// default: the benchmark times the solver, and a scene that falls asleep would cost almost

@@ -30,6 +30,7 @@ declare -A FRAMES=(
   ["Engine/Smash"]=60        # 1 s: the projectile inside the block
   ["Engine/Conveyor and platform"]=900  # 15 s: boxes landed on the one-way platform
   ["Engine/Tumbler"]=600
+  ["Engine/Ragdoll rain"]=600  # 10 s: the first columns landed, more on their way
 )
 
 count=0
