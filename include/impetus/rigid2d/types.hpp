@@ -117,7 +117,7 @@ struct StepProfile {
   float integratePositions = 0.0f;
   float relax = 0.0f;
   float restitution = 0.0f;
-  float storeImpulses = 0.0f; ///< and the joints' reactions and break events
+  float storeImpulses = 0.0f; ///< and the joints' break events
   float finalize = 0.0f;
 };
 
