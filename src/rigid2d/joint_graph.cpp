@@ -114,14 +114,19 @@ const JointData& jointDataOf(const WorldState& w, std::uint32_t slot) {
 }
 
 void forgetJointSim(WorldState& w, std::uint32_t slot) {
-  if (w.contactSolver && slot < w.contactSolver->simOfJoint.size()) {
-    if (std::uint32_t& k = w.contactSolver->simOfJoint[slot]; k != noJointSim) {
-      w.contactSolver->jointSims[k].slot = noJointSim;
+  if (!w.contactSolver) {
+    return;
+  }
+  ContactSolverData& d = *w.contactSolver;
+  if (slot < d.simOfJoint.size()) {
+    if (std::uint32_t& k = d.simOfJoint[slot]; k != noJointSim) {
+      d.jointSims[k].slot = noJointSim;
       k = noJointSim;
-      // Coloured again next step, even if a new joint in this slot makes the same list.
-      w.contactSolver->jointColoursValid = false;
     }
   }
+  // Coloured again next step, whether or not the joint had a copy (a filter joint has none):
+  // a new joint in its slot would make the same list of solved joints.
+  d.jointColoursValid = false;
 }
 
 void returnJointSims(WorldState& w) {

@@ -70,8 +70,9 @@ void solveJoint(WorldState& w, std::uint32_t slot, const StepContext& context, b
 void warmStartJoints(WorldState& w);
 void solveJoints(WorldState& w, const StepContext& context, bool useBias);
 /// The force and torque on body B over the last substep of the joint's last solve (N, N m):
-/// its impulses times the substep rate. Read when asked, as Box2D v3's: a sleeping joint still
-/// carries what it carried when it fell asleep.
+/// its impulses times the world's last substep rate. Read when asked, as Box2D v3's: a sleeping
+/// joint still carries the impulses it had when it fell asleep (read at the current rate, should
+/// the steps have changed since).
 [[nodiscard]] JointReaction reactionOf(const JointData& data, float inverseH);
 /// Whether the joint has a finite break force or torque (only those are checked each step).
 [[nodiscard]] bool breakable(const Joint& joint);
@@ -89,7 +90,7 @@ void finishJoints(WorldState& w, const StepContext& context);
 [[nodiscard]] JointData& jointDataOf(WorldState& w, std::uint32_t slot);
 [[nodiscard]] const JointData& jointDataOf(const WorldState& w, std::uint32_t slot);
 /// A destroyed joint's copy, if any, forgotten, and the joints coloured again at the next step
-/// (its slot may be reused before then, by a joint with other bodies).
+/// (its slot may be reused before then, by a joint of another kind or with other bodies).
 void forgetJointSim(WorldState& w, std::uint32_t slot);
 /// Every copy's data back into its joint, and the copies gone (before the book's solver runs).
 void returnJointSims(WorldState& w);

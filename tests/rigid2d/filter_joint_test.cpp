@@ -50,6 +50,40 @@ TEST(FilterJoint, joined_bodies_pass_through_each_other_and_collide_again_once_i
   EXPECT_NEAR(world.linearVelocity(still).x, 1.0f, 0.01f);
 }
 
+// A filter joint has no rows, so the solver keeps no copy of it; destroying it must still make
+// the solver colour its joints again: a pin made in its slot (the same list of solved joints,
+// the same moving bodies) holds a pendulum at its length, as a pin made anywhere else would.
+TEST(FilterJoint, a_pin_made_in_its_slot_after_it_is_gone_is_solved) {
+  World world;
+  BodyDef bd;
+  bd.type = BodyType::dynamicBody;
+  bd.enableSleep = false;
+  bd.position = {1.0f, 0.0f};
+  const BodyId bob = world.createBody(bd);
+  world.createShape(bob, {}, Circle{{}, 0.1f});
+  bd.position = {0.0f, 0.0f};
+  bd.gravityScale = 0.0f;
+  const BodyId hub = world.createBody(bd); // free, but weightless: the bob swings about it
+  world.createShape(hub, {}, Circle{{}, 0.1f});
+  FilterJointDef filter;
+  filter.bodyA = hub;
+  filter.bodyB = bob;
+  const auto old = world.createJoint(filter);
+  world.step(dt);
+  world.destroyJoint(old);
+  RevoluteJointDef pin;
+  pin.bodyA = hub;
+  pin.bodyB = bob;
+  pin.localAnchorB = {-1.0f, 0.0f};
+  const auto id = world.createJoint(pin);
+  ASSERT_EQ(id.id.index, old.id.index) << "the test needs the slot reused";
+  for (int i = 0; i < 60; ++i) {
+    world.step(dt);
+  }
+  EXPECT_NEAR(length(world.position(bob) - world.position(hub)), 1.0f, 0.01f) << "the pin holds the bob";
+  EXPECT_GT(length(world.jointReactionForce(id)), 0.0f);
+}
+
 TEST(FilterJoint, one_that_would_let_its_bodies_collide_is_refused) {
   World world;
   BodyDef bd;
