@@ -33,7 +33,7 @@ struct Joint {
   std::uint64_t userData = 0;
   JointId id;
   bool alive = false;
-  JointFrame frame; ///< this step's solver view (valid while solved)
+  JointFrame frame; ///< the book's solver's view this step (the soft step's is in the joint's JointSim)
 
   [[nodiscard]] JointType type() const noexcept { return static_cast<JointType>(data.index()); }
 };
@@ -41,7 +41,8 @@ struct Joint {
 /// A joint as the soft step solves it: a copy of its per-type data and this step's frame, laid out
 /// colour by colour in the constraint graph so that every pass over a colour walks memory in
 /// order (the Joint itself holds cold bookkeeping too: 376 bytes, the solve reads under 280).
-/// Written back to its slot after the substeps (storeImpulses).
+/// Kept from step to step while the joints and moving bodies stay the same, holding the joint's
+/// data meanwhile (jointDataOf); returned to its slot when the joints are coloured again.
 struct JointSim {
   JointData data;
   JointFrame frame;
