@@ -73,13 +73,12 @@ std::vector<std::pair<const char*, float>> profileParts(const StepProfile& p) {
           {"solve", p.solveConstraints},
           {"integrate_positions", p.integratePositions},
           {"relax", p.relax},
-          {"restitution", p.restitution},
           {"store_impulses", p.storeImpulses},
           {"finalize", p.finalize}};
 }
 
 /// Every part of a StepProfile, for sums and means.
-constexpr std::array<float StepProfile::*, 13> profileMembers = {&StepProfile::step,
+constexpr std::array<float StepProfile::*, 12> profileMembers = {&StepProfile::step,
                                                                  &StepProfile::pairs,
                                                                  &StepProfile::collide,
                                                                  &StepProfile::solve,
@@ -89,7 +88,6 @@ constexpr std::array<float StepProfile::*, 13> profileMembers = {&StepProfile::s
                                                                  &StepProfile::solveConstraints,
                                                                  &StepProfile::integratePositions,
                                                                  &StepProfile::relax,
-                                                                 &StepProfile::restitution,
                                                                  &StepProfile::storeImpulses,
                                                                  &StepProfile::finalize};
 

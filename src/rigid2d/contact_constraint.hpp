@@ -25,7 +25,7 @@ struct ConstraintPoint {
   float maxNormalImpulse = 0.0f;
   float normalMass = 0.0f;
   float tangentMass = 0.0f;
-  float relativeVelocity = 0.0f; ///< normal approach speed, for restitution and hit events
+  float impactSpeed = 0.0f; ///< the fastest approach a bounce met this step (hit events), m/s
 };
 
 /// One contact: solved alone (the overflow), or copied into a lane of a wide batch.
@@ -98,8 +98,7 @@ struct ContactConstraint {
     p.tangentMass = kTangent > 0.0f ? 1.0f / kTangent : 0.0f;
     const Vec2f vA = stA.v + cross(stA.w, p.rA);
     const Vec2f vB = stB.v + cross(stB.w, p.rB);
-    p.relativeVelocity = dot(vB - vA, m.normal);
-    contact.approachBefore[static_cast<std::size_t>(k)] = -p.relativeVelocity;
+    contact.approachBefore[static_cast<std::size_t>(k)] = -dot(vB - vA, m.normal);
   }
   return c;
 }
@@ -121,8 +120,10 @@ inline constexpr std::uint32_t noContact = ~std::uint32_t{0};
 
 /// Notes the fastest impact for hit events and keeps the impulses for the next warm start.
 [[gnu::always_inline]] static inline void storePoint(Contact& contact, int k, float normalImpulse, float tangentImpulse,
-                                                     float maxNormalImpulse) {
-  const float approach = contact.approachBefore[static_cast<std::size_t>(k)];
+                                                     float maxNormalImpulse, float impactSpeed) {
+  // The approach before the step, or faster where a bounce met one within it (an impact passed
+  // along a row of touching bodies).
+  const float approach = std::max(contact.approachBefore[static_cast<std::size_t>(k)], impactSpeed);
   if (maxNormalImpulse > 0.0f && approach > contact.approachSpeed) {
     contact.approachSpeed = approach;
     contact.fastestPoint = k;
@@ -134,9 +135,10 @@ inline constexpr std::uint32_t noContact = ~std::uint32_t{0};
 
 /// The per-substep constants of a solve pass.
 struct ContactSolveParams {
-  float inverseH = 0.0f;  ///< 1/s
-  float pushSpeed = 0.0f; ///< the most the bias may push apart, m/s
-  bool useBias = true;    ///< false: the relax pass
+  float inverseH = 0.0f;             ///< 1/s
+  float pushSpeed = 0.0f;            ///< the most the bias may push apart, m/s
+  float restitutionThreshold = 0.0f; ///< m/s: slower impacts do not bounce
+  bool useBias = true;               ///< false: the relax pass
 };
 
 /// Wide kernels over batches [begin, end) of an array of `width`-lane constraints (opaque here:
@@ -154,8 +156,6 @@ struct WideKernels {
                     std::uint32_t staticIndex) = nullptr;
   void (*solve)(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states, std::uint32_t staticIndex,
                 const ContactSolveParams& params) = nullptr;
-  void (*restitution)(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states,
-                      std::uint32_t staticIndex, float threshold) = nullptr;
   /// Stores batch `batch`'s impulses into the contacts in slots[0, width) (noContact: none) for
   /// the next warm start, with the fastest approach and the hit flag (approachMayHit).
   void (*store)(const void* batches, std::uint32_t batch, WorldState& w, const std::uint32_t* slots,

@@ -1,6 +1,6 @@
 // The contact constraints of the soft-step solver (after Erin Catto's Solver2D "soft step" and
-// Box2D v3): soft contacts with a stiffness in hertz, warm starting, a relax pass, restitution,
-// Coulomb friction and rolling resistance.
+// Box2D v3): soft contacts with a stiffness in hertz, warm starting, a relax pass, restitution
+// as impacts within the passes, Coulomb friction and rolling resistance.
 //
 // Layout: the constraint graph (constraint_graph.hpp). The joints keep their colours while the
 // joints and moving bodies stay the same (joint_graph.cpp); the touching contacts are coloured
@@ -68,28 +68,93 @@ void solveRolling(BodyState& a, BodyState& b, ContactConstraint& c) {
   b.w += c.iB * applied;
 }
 
+/// The impact of a contact's bouncing points (restitution > 0, approaching faster than the
+/// threshold, touching or closing the gap within this substep): an
+/// instantaneous collision by Newton's law, each point's normal velocity becoming e times its
+/// approach speed (a two-point manifold's as a block: both points, one, or neither push,
+/// maxBlockConditionNumber), with Coulomb friction up to mu times the impact's impulse. The
+/// approach is measured now, before this contact pushes at any point, so an impact passed on by
+/// a neighbour this very pass (a row of touching boxes struck at one end) is a collision of its
+/// own: the impulse travels along the row as a sequence of collisions, Newton's cradle. The
+/// impulses are not accumulated into the soft contact's (a bounce is not a force to warm start;
+/// the soft solve would take it back as the points separate).
+void bounceOne(ContactConstraint& c, BodyState& a, BodyState& b, const std::array<float, 2>& separation,
+               const ContactSolveParams& params) {
+  const auto normalVelocity = [&](const ConstraintPoint& p) {
+    return dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
+  };
+  std::array<float, 2> approach{};
+  std::array<bool, 2> bounces{};
+  bool any = false;
+  for (int k = 0; k < c.pointCount; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const ConstraintPoint& p = c.points[i];
+    approach[i] = normalVelocity(p);
+    bounces[i] = approach[i] < -params.restitutionThreshold &&
+                 approach[i] + std::max(separation[i], 0.0f) * params.inverseH < 0.0f;
+    any = any || bounces[i];
+  }
+  if (!any) {
+    return;
+  }
+  std::array<float, 2> impulse{};
+  const auto target = [&](std::size_t i) { return -(c.restitution * approach[i]); };
+  bool block = false;
+  if (bounces[0] && bounces[1]) {
+    const ConstraintPoint& p1 = c.points[0];
+    const ConstraintPoint& p2 = c.points[1];
+    const float rnA1 = cross(p1.rA, c.normal);
+    const float rnA2 = cross(p2.rA, c.normal);
+    const float rnB1 = cross(p1.rB, c.normal);
+    const float rnB2 = cross(p2.rB, c.normal);
+    const float k11 = normalCoupling(c.mA, c.mB, c.iA, c.iB, rnA1, rnA1, rnB1, rnB1);
+    const float k12 = normalCoupling(c.mA, c.mB, c.iA, c.iB, rnA1, rnA2, rnB1, rnB2);
+    const float k22 = normalCoupling(c.mA, c.mB, c.iA, c.iB, rnA2, rnA2, rnB2, rnB2);
+    block = maxBlockConditionNumber * (k11 * k22 - k12 * k12) > k11 * k11;
+    if (block) {
+      solveNormalBlock(k11, k12, k22, approach[0], approach[1], target(0), target(1), 0.0f, impulse[0], impulse[1]);
+      applyImpulse(a, b, c, p1, c.normal * impulse[0]);
+      applyImpulse(a, b, c, p2, c.normal * impulse[1]);
+    }
+  }
+  for (std::size_t i = 0; i < 2 && !block; ++i) {
+    if (bounces[i]) {
+      const ConstraintPoint& p = c.points[i];
+      impulse[i] = std::max(-p.normalMass * (normalVelocity(p) - target(i)), 0.0f);
+      applyImpulse(a, b, c, p, c.normal * impulse[i]);
+    }
+  }
+  const Vec2f tangent{c.normal.y, -c.normal.x};
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (bounces[i]) {
+      ConstraintPoint& p = c.points[i];
+      const float vt = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), tangent) - c.tangentSpeed;
+      const float limit = c.friction * impulse[i];
+      applyImpulse(a, b, c, p, tangent * std::clamp(-p.tangentMass * vt, -limit, limit));
+      p.maxNormalImpulse = std::max(p.maxNormalImpulse, impulse[i]);
+      p.impactSpeed = std::max(p.impactSpeed, -approach[i]);
+    }
+  }
+}
+
 void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_t staticIndex,
               const ContactSolveParams& params) {
   BodyState a = states[c.indexA];
   BodyState b = states[c.indexB];
   const Vec2f dp = b.dp - a.dp;
-  // The approach speed at impact, for restitution: gravity may have sped the bodies up since the
-  // step began (2% of e^2 h in a dropped ball's rebound). Measured at every point before this
-  // pass pushes at any: the first point's impulse turns the body, which would add to the second
-  // point's approach.
-  const bool measureApproach = params.useBias && c.restitution != 0.0f;
-  std::array<float, 2> approach{};
-  if (measureApproach) {
-    for (int k = 0; k < c.pointCount; ++k) {
-      const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-      approach[static_cast<std::size_t>(k)] = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
-    }
+  std::array<float, 2> separation{};
+  for (int k = 0; k < c.pointCount; ++k) {
+    const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+    // Current separation from the deltas: the anchors turn with their bodies.
+    const Vec2f dd = dp + rotate(b.dq, p.rB) - rotate(a.dq, p.rA);
+    separation[static_cast<std::size_t>(k)] = dot(dd, c.normal) + p.adjustedSeparation;
+  }
+  if (c.restitution != 0.0f) {
+    bounceOne(c, a, b, separation, params);
   }
   for (int k = 0; k < c.pointCount; ++k) {
     ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-    // Current separation from the deltas: the anchors turn with their bodies.
-    const Vec2f dd = dp + rotate(b.dq, p.rB) - rotate(a.dq, p.rA);
-    const float s = dot(dd, c.normal) + p.adjustedSeparation;
+    const float s = separation[static_cast<std::size_t>(k)];
     float bias = 0.0f;
     float massScale = 1.0f;
     float impulseScale = 0.0f;
@@ -101,9 +166,6 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
       impulseScale = c.softness.impulseScale;
     }
     const float vn = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
-    if (measureApproach && s <= 0.0f) {
-      p.relativeVelocity = std::min(p.relativeVelocity, approach[static_cast<std::size_t>(k)]);
-    }
     const float impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
     const float total = std::max(p.normalImpulse + impulse, 0.0f);
     const float applied = total - p.normalImpulse;
@@ -122,68 +184,6 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
     applyImpulse(a, b, c, p, tangent * applied);
   }
   solveRolling(a, b, c);
-  if (c.indexA != staticIndex) {
-    states[c.indexA].v = a.v;
-    states[c.indexA].w = a.w;
-  }
-  if (c.indexB != staticIndex) {
-    states[c.indexB].v = b.v;
-    states[c.indexB].w = b.w;
-  }
-}
-
-/// Whether point p bounces: it approached faster than the threshold (m/s) and took an impulse.
-bool bounces(const ConstraintPoint& p, float threshold) {
-  return andW(greaterW(-threshold, p.relativeVelocity), greaterW(p.maxNormalImpulse, 0.0f));
-}
-
-/// The restitution pass of one contact: each bouncing point's normal velocity becomes e times
-/// its approach speed, a two-point manifold's as a block (maxBlockConditionNumber).
-void restitutionOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_t staticIndex, float threshold) {
-  if (c.restitution == 0.0f) {
-    return;
-  }
-  BodyState a = states[c.indexA];
-  BodyState b = states[c.indexB];
-  const auto normalVelocity = [&](const ConstraintPoint& p) {
-    return dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
-  };
-  const auto target = [&](const ConstraintPoint& p) { return -(c.restitution * p.relativeVelocity); };
-  bool block = false;
-  if (c.pointCount == 2 && bounces(c.points[0], threshold) && bounces(c.points[1], threshold)) {
-    ConstraintPoint& p1 = c.points[0];
-    ConstraintPoint& p2 = c.points[1];
-    const float rnA1 = cross(p1.rA, c.normal);
-    const float rnA2 = cross(p2.rA, c.normal);
-    const float rnB1 = cross(p1.rB, c.normal);
-    const float rnB2 = cross(p2.rB, c.normal);
-    const float k11 = normalCoupling(c.mA, c.mB, c.iA, c.iB, rnA1, rnA1, rnB1, rnB1);
-    const float k12 = normalCoupling(c.mA, c.mB, c.iA, c.iB, rnA1, rnA2, rnB1, rnB2);
-    const float k22 = normalCoupling(c.mA, c.mB, c.iA, c.iB, rnA2, rnA2, rnB2, rnB2);
-    block = maxBlockConditionNumber * (k11 * k22 - k12 * k12) > k11 * k11;
-    if (block) {
-      float x1 = p1.normalImpulse;
-      float x2 = p2.normalImpulse;
-      solveNormalBlock(k11, k12, k22, normalVelocity(p1), normalVelocity(p2), target(p1), target(p2), 0.0f, x1, x2);
-      const float applied1 = x1 - p1.normalImpulse;
-      const float applied2 = x2 - p2.normalImpulse;
-      p1.normalImpulse = p1.normalImpulse + applied1;
-      p2.normalImpulse = p2.normalImpulse + applied2;
-      applyImpulse(a, b, c, p1, c.normal * applied1);
-      applyImpulse(a, b, c, p2, c.normal * applied2);
-    }
-  }
-  for (int k = 0; k < c.pointCount && !block; ++k) {
-    ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-    if (!bounces(p, threshold)) {
-      continue;
-    }
-    const float impulse = -p.normalMass * (normalVelocity(p) - target(p));
-    const float total = std::max(p.normalImpulse + impulse, 0.0f);
-    const float applied = total - p.normalImpulse;
-    p.normalImpulse = total;
-    applyImpulse(a, b, c, p, c.normal * applied);
-  }
   if (c.indexA != staticIndex) {
     states[c.indexA].v = a.v;
     states[c.indexA].w = a.w;
@@ -358,26 +358,13 @@ void solveConstraints(WorldState& w, const StepContext& context, bool useBias) {
   const std::uint32_t staticIndex = w.staticIndex();
   ContactSolverData& d = *w.contactSolver;
   BodyState* states = w.states.data();
-  const ContactSolveParams params{context.inverseH, d.pushSpeed, useBias};
+  const ContactSolveParams params{context.inverseH, d.pushSpeed, d.restitutionThreshold, useBias};
   forEachColour(
       w, [&](JointSim& joint) { solveJoint(joint, w.states, staticIndex, context, useBias); },
       [&](std::uint32_t begin, std::uint32_t end) {
         d.kernels->solve(d.batches(), begin, end, states, staticIndex, params);
       },
       [&](ContactConstraint& c) { solveOne(c, w.states, staticIndex, params); });
-}
-
-void applyRestitution(WorldState& w) {
-  const std::uint32_t staticIndex = w.staticIndex();
-  ContactSolverData& d = *w.contactSolver;
-  BodyState* states = w.states.data();
-  const float threshold = d.restitutionThreshold;
-  forEachColour(
-      w, [](JointSim&) {}, // joints have no restitution
-      [&](std::uint32_t begin, std::uint32_t end) {
-        d.kernels->restitution(d.batches(), begin, end, states, staticIndex, threshold);
-      },
-      [&](ContactConstraint& c) { restitutionOne(c, w.states, staticIndex, threshold); });
 }
 
 void storeImpulses(WorldState& w) {
@@ -388,7 +375,7 @@ void storeImpulses(WorldState& w) {
     contact.rollingImpulse = c.rollingImpulse;
     for (int k = 0; k < c.pointCount; ++k) {
       const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-      storePoint(contact, k, p.normalImpulse, p.tangentImpulse, p.maxNormalImpulse);
+      storePoint(contact, k, p.normalImpulse, p.tangentImpulse, p.maxNormalImpulse, p.impactSpeed);
     }
     w.maybeHit[c.contact] = approachMayHit(contact.approachSpeed, hitThreshold) ? 1 : 0;
   }

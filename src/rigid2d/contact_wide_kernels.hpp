@@ -28,7 +28,7 @@ struct ContactConstraintWide {
     FloatW adjustedSeparation;
     FloatW normalImpulse, tangentImpulse, maxNormalImpulse;
     FloatW normalMass, tangentMass;
-    FloatW relativeVelocity;
+    FloatW impactSpeed;
   };
   std::array<Point, 2> points;
 };
@@ -109,7 +109,7 @@ struct BodiesW {
     lane(wp.maxNormalImpulse, i) = 0.0f;
     lane(wp.normalMass, i) = p.normalMass;
     lane(wp.tangentMass, i) = p.tangentMass;
-    lane(wp.relativeVelocity, i) = p.relativeVelocity;
+    lane(wp.impactSpeed, i) = 0.0f;
   }
 }
 
@@ -139,6 +139,72 @@ void applyW(BodiesW& a, BodiesW& b, const ContactConstraintWide& c, const Contac
   b.w = b.w + c.invIB * (p.rBx * py - p.rBy * px);
 }
 
+/// bounceOne (contact_solver.cpp), lane by lane: the impact of the batch's bouncing points, by
+/// Newton's law with Coulomb friction on the impact's impulse, a two-point manifold's as a block.
+void bounceWide(ContactConstraintWide& c, BodiesW& a, BodiesW& b, const std::array<FloatW, 2>& separation,
+                const ContactSolveParams& params) {
+  const FloatW zero = zeroW();
+  const FloatW one = splatW(1.0f);
+  const FloatW invH = splatW(params.inverseH);
+  const FloatW minusThreshold = splatW(-params.restitutionThreshold);
+  const FloatW hasRestitution = greaterW(c.restitution, zero);
+  std::array<FloatW, 2> approach{};
+  std::array<FloatW, 2> bounces{};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const ContactConstraintWide::Point& p = c.points[k];
+    approach[k] = relativeVelocity(a, b, p, c.normalX, c.normalY);
+    const FloatW closes = greaterW(zero, approach[k] + maxW(separation[k], zero) * invH);
+    bounces[k] = andW(hasRestitution, andW(greaterW(minusThreshold, approach[k]), closes));
+  }
+  if (!anyNonZeroW(orW(bounces[0], bounces[1]))) {
+    return;
+  }
+  const auto target = [&](std::size_t k) { return -(c.restitution * approach[k]); };
+  ContactConstraintWide::Point& p1 = c.points[0];
+  ContactConstraintWide::Point& p2 = c.points[1];
+  const FloatW rnA1 = p1.rAx * c.normalY - p1.rAy * c.normalX;
+  const FloatW rnA2 = p2.rAx * c.normalY - p2.rAy * c.normalX;
+  const FloatW rnB1 = p1.rBx * c.normalY - p1.rBy * c.normalX;
+  const FloatW rnB2 = p2.rBx * c.normalY - p2.rBy * c.normalX;
+  const FloatW k11 = normalCoupling(c.invMassA, c.invMassB, c.invIA, c.invIB, rnA1, rnA1, rnB1, rnB1);
+  const FloatW k12 = normalCoupling(c.invMassA, c.invMassB, c.invIA, c.invIB, rnA1, rnA2, rnB1, rnB2);
+  const FloatW k22 = normalCoupling(c.invMassA, c.invMassB, c.invIA, c.invIB, rnA2, rnA2, rnB2, rnB2);
+  const FloatW block = andW(andW(bounces[0], bounces[1]),
+                            greaterW(splatW(maxBlockConditionNumber) * (k11 * k22 - k12 * k12), k11 * k11));
+  std::array<FloatW, 2> impulse{zero, zero};
+  if (anyNonZeroW(block)) {
+    // Lanes outside the block solve the identity, and discard it.
+    FloatW x1 = zero;
+    FloatW x2 = zero;
+    solveNormalBlock(selectW(block, k11, one), selectW(block, k12, zero), selectW(block, k22, one), approach[0],
+                     approach[1], target(0), target(1), zero, x1, x2);
+    impulse[0] = selectW(block, x1, zero);
+    impulse[1] = selectW(block, x2, zero);
+    applyW(a, b, c, p1, impulse[0] * c.normalX, impulse[0] * c.normalY);
+    applyW(a, b, c, p2, impulse[1] * c.normalX, impulse[1] * c.normalY);
+  }
+  for (std::size_t k = 0; k < 2; ++k) {
+    // The points of the lanes the block did not take, one after the other.
+    const ContactConstraintWide::Point& p = c.points[k];
+    const FloatW alone = selectW(block, zero, bounces[k]);
+    const FloatW vn = relativeVelocity(a, b, p, c.normalX, c.normalY);
+    const FloatW applied = selectW(alone, maxW(-(p.normalMass * (vn - target(k))), zero), zero);
+    impulse[k] = impulse[k] + applied;
+    applyW(a, b, c, p, applied * c.normalX, applied * c.normalY);
+  }
+  const FloatW tx = c.normalY;
+  const FloatW ty = -c.normalX;
+  for (std::size_t k = 0; k < 2; ++k) {
+    ContactConstraintWide::Point& p = c.points[k];
+    const FloatW vt = relativeVelocity(a, b, p, tx, ty) - c.tangentSpeed;
+    const FloatW limit = c.friction * impulse[k];
+    const FloatW applied = selectW(bounces[k], maxW(minW(-(p.tangentMass * vt), limit), -limit), zero);
+    applyW(a, b, c, p, applied * tx, applied * ty);
+    p.maxNormalImpulse = maxW(p.maxNormalImpulse, impulse[k]);
+    p.impactSpeed = selectW(bounces[k], maxW(p.impactSpeed, -approach[k]), p.impactSpeed);
+  }
+}
+
 [[gnu::always_inline]] inline void solveWide(ContactConstraintWide& c, BodyState* states, std::uint32_t staticIndex,
                                              const ContactSolveParams& params) {
   BodiesW a = gather(states, c.indexA);
@@ -149,27 +215,23 @@ void applyW(BodiesW& a, BodiesW& b, const ContactConstraintWide& c, const Contac
   const FloatW minBias = splatW(-params.pushSpeed);
   const FloatW dpx = b.dpx - a.dpx;
   const FloatW dpy = b.dpy - a.dpy;
-  FloatW totalNormal = zero;
-  // The approach speed at impact, for restitution (only lanes that bounce need it): gravity may
-  // have sped the bodies up since the step began (2% of e^2 h in a dropped ball's rebound).
-  // Measured at every point before this pass pushes at any: the first point's impulse turns
-  // the body, which would add to the second point's approach (a box landing flat at 6.3 m/s
-  // measured 9.3 m/s at its second corner).
-  const bool measureApproach = params.useBias && anyNonZeroW(c.restitution);
-  std::array<FloatW, 2> approach{};
-  if (measureApproach) {
-    for (std::size_t k = 0; k < 2; ++k) {
-      approach[k] = relativeVelocity(a, b, c.points[k], c.normalX, c.normalY);
-    }
-  }
+  std::array<FloatW, 2> separation{};
   for (std::size_t k = 0; k < 2; ++k) {
-    ContactConstraintWide::Point& p = c.points[k];
+    const ContactConstraintWide::Point& p = c.points[k];
     // Separation now: the anchors turned by each body's rotation delta.
     const FloatW prBx = b.dqc * p.rBx - b.dqs * p.rBy;
     const FloatW prBy = b.dqs * p.rBx + b.dqc * p.rBy;
     const FloatW prAx = a.dqc * p.rAx - a.dqs * p.rAy;
     const FloatW prAy = a.dqs * p.rAx + a.dqc * p.rAy;
-    const FloatW s = (dpx + prBx - prAx) * c.normalX + (dpy + prBy - prAy) * c.normalY + p.adjustedSeparation;
+    separation[k] = (dpx + prBx - prAx) * c.normalX + (dpy + prBy - prAy) * c.normalY + p.adjustedSeparation;
+  }
+  if (anyNonZeroW(c.restitution)) {
+    bounceWide(c, a, b, separation, params);
+  }
+  FloatW totalNormal = zero;
+  for (std::size_t k = 0; k < 2; ++k) {
+    ContactConstraintWide::Point& p = c.points[k];
+    const FloatW s = separation[k];
     const FloatW speculative = greaterW(s, zero);
     FloatW bias = s * invH;
     FloatW massScale = one;
@@ -179,9 +241,6 @@ void applyW(BodiesW& a, BodiesW& b, const ContactConstraintWide& c, const Contac
       bias = selectW(speculative, bias, maxW(c.biasRate * s, minBias));
       massScale = selectW(speculative, one, c.massScale);
       impulseScale = selectW(speculative, zero, c.impulseScale);
-      if (measureApproach) {
-        p.relativeVelocity = selectW(speculative, p.relativeVelocity, minW(p.relativeVelocity, approach[k]));
-      }
     } else {
       bias = selectW(speculative, bias, zero);
     }
@@ -233,63 +292,6 @@ void applyW(BodiesW& a, BodiesW& b, const ContactConstraintWide& c, const Contac
   scatter(states, c.indexB, staticIndex, b);
 }
 
-/// The restitution pass (restitutionOne, lane by lane): each bouncing point's normal velocity
-/// becomes e times its approach speed, a two-point manifold's as a block.
-void restitutionWide(ContactConstraintWide& c, BodyState* states, std::uint32_t staticIndex, float threshold) {
-  if (!anyNonZeroW(c.restitution)) {
-    return; // nothing bounces in this batch (the common case): skip the gather and scatter
-  }
-  BodiesW a = gatherVelocities(states, c.indexA);
-  BodiesW b = gatherVelocities(states, c.indexB);
-  const FloatW zero = zeroW();
-  const FloatW one = splatW(1.0f);
-  const FloatW minusThreshold = splatW(-threshold);
-  // Only points that approached faster than the threshold and took an impulse bounce (and
-  // nothing in lanes without restitution).
-  const auto bounces = [&](const ContactConstraintWide::Point& p) {
-    return andW(andW(greaterW(minusThreshold, p.relativeVelocity), greaterW(p.maxNormalImpulse, zero)),
-                greaterW(c.restitution, zero));
-  };
-  const auto target = [&](const ContactConstraintWide::Point& p) { return -(c.restitution * p.relativeVelocity); };
-  ContactConstraintWide::Point& p1 = c.points[0];
-  ContactConstraintWide::Point& p2 = c.points[1];
-  const FloatW rnA1 = p1.rAx * c.normalY - p1.rAy * c.normalX;
-  const FloatW rnA2 = p2.rAx * c.normalY - p2.rAy * c.normalX;
-  const FloatW rnB1 = p1.rBx * c.normalY - p1.rBy * c.normalX;
-  const FloatW rnB2 = p2.rBx * c.normalY - p2.rBy * c.normalX;
-  const FloatW k11 = normalCoupling(c.invMassA, c.invMassB, c.invIA, c.invIB, rnA1, rnA1, rnB1, rnB1);
-  const FloatW k12 = normalCoupling(c.invMassA, c.invMassB, c.invIA, c.invIB, rnA1, rnA2, rnB1, rnB2);
-  const FloatW k22 = normalCoupling(c.invMassA, c.invMassB, c.invIA, c.invIB, rnA2, rnA2, rnB2, rnB2);
-  const FloatW block = andW(andW(bounces(p1), bounces(p2)),
-                            greaterW(splatW(maxBlockConditionNumber) * (k11 * k22 - k12 * k12), k11 * k11));
-  if (anyNonZeroW(block)) {
-    // Lanes outside the block solve the identity, and discard it.
-    FloatW x1 = p1.normalImpulse;
-    FloatW x2 = p2.normalImpulse;
-    solveNormalBlock(selectW(block, k11, one), selectW(block, k12, zero), selectW(block, k22, one),
-                     relativeVelocity(a, b, p1, c.normalX, c.normalY), relativeVelocity(a, b, p2, c.normalX, c.normalY),
-                     target(p1), target(p2), zero, x1, x2);
-    const FloatW applied1 = selectW(block, x1 - p1.normalImpulse, zero);
-    const FloatW applied2 = selectW(block, x2 - p2.normalImpulse, zero);
-    p1.normalImpulse = p1.normalImpulse + applied1;
-    p2.normalImpulse = p2.normalImpulse + applied2;
-    applyW(a, b, c, p1, applied1 * c.normalX, applied1 * c.normalY);
-    applyW(a, b, c, p2, applied2 * c.normalX, applied2 * c.normalY);
-  }
-  for (ContactConstraintWide::Point& p : c.points) {
-    // The points of the lanes the block did not take, one after the other.
-    const FloatW alone = selectW(block, zero, bounces(p));
-    const FloatW vn = relativeVelocity(a, b, p, c.normalX, c.normalY);
-    const FloatW impulse = -(p.normalMass * (vn - target(p)));
-    const FloatW total = maxW(p.normalImpulse + impulse, zero);
-    const FloatW applied = selectW(alone, total - p.normalImpulse, zero);
-    p.normalImpulse = p.normalImpulse + applied;
-    applyW(a, b, c, p, applied * c.normalX, applied * c.normalY);
-  }
-  scatter(states, c.indexA, staticIndex, a);
-  scatter(states, c.indexB, staticIndex, b);
-}
-
 // The table's entries: loops over batches, so the call through the table costs once per range.
 
 ContactConstraintWide* batchesOf(void* batches) { return static_cast<ContactConstraintWide*>(batches); }
@@ -324,13 +326,6 @@ void solveBatches(void* batches, std::uint32_t begin, std::uint32_t end, BodySta
   }
 }
 
-void restitutionBatches(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states,
-                        std::uint32_t staticIndex, float threshold) {
-  for (std::uint32_t i = begin; i < end; ++i) {
-    restitutionWide(batchesOf(batches)[i], states, staticIndex, threshold);
-  }
-}
-
 void storeBatch(const void* batches, std::uint32_t batch, WorldState& w, const std::uint32_t* slots,
                 float hitThreshold) {
   const ContactConstraintWide& wc = static_cast<const ContactConstraintWide*>(batches)[batch];
@@ -343,7 +338,8 @@ void storeBatch(const void* batches, std::uint32_t batch, WorldState& w, const s
     contact.rollingImpulse = lane(wc.rollingImpulse, i);
     for (int k = 0; k < contact.manifold.pointCount; ++k) {
       const ContactConstraintWide::Point& p = wc.points[static_cast<std::size_t>(k)];
-      storePoint(contact, k, lane(p.normalImpulse, i), lane(p.tangentImpulse, i), lane(p.maxNormalImpulse, i));
+      storePoint(contact, k, lane(p.normalImpulse, i), lane(p.tangentImpulse, i), lane(p.maxNormalImpulse, i),
+                 lane(p.impactSpeed, i));
     }
     w.maybeHit[slot] = approachMayHit(contact.approachSpeed, hitThreshold) ? 1 : 0;
   }
@@ -353,8 +349,8 @@ static_assert(simdWidth <= maxWideLanes);
 static_assert(alignof(ContactConstraintWide) <= wideAlignment);
 static_assert(sizeof(ContactConstraintWide) % alignof(ContactConstraintWide) == 0);
 
-constexpr WideKernels wideKernels{simdName,          simdWidth,     sizeof(ContactConstraintWide), &prepareBatch,
-                                  &warmStartBatches, &solveBatches, &restitutionBatches,           &storeBatch};
+constexpr WideKernels wideKernels{
+    simdName, simdWidth, sizeof(ContactConstraintWide), &prepareBatch, &warmStartBatches, &solveBatches, &storeBatch};
 
 } // namespace
 } // namespace impetus::rigid2d::detail

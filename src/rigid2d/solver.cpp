@@ -4,8 +4,9 @@
 // (gravity, applied forces, damping), warm start the contacts and joints with their accumulated
 // impulses, solve them with bias (soft constraints that push overlap apart at a bounded speed),
 // integrate positions (as deltas, at speeds held within the world's limits: capVelocity), and
-// relax (solve again without bias, taking back the velocity the bias added). Restitution is
-// applied once at the end, and the impulses are stored for the next step.
+// relax (solve again without bias, taking back the velocity the bias added); restitution acts
+// within the solve and relax, as impacts (contact_solver.cpp). The impulses are stored for the
+// next step.
 #include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
 #include "solver/stage_clock.hpp"
@@ -145,7 +146,6 @@ constexpr StageStep eachSubstep[] = {
 };
 
 constexpr StageStep afterSubsteps[] = {
-    {"restitution", [](WorldState& w, const StepContext&) { applyRestitution(w); }, &StepProfile::restitution},
     {"store impulses",
      [](WorldState& w, const StepContext& c) {
        storeImpulses(w);

@@ -420,7 +420,6 @@ void solveBookImpulse(WorldState& w, float dt);
 void prepareConstraints(WorldState& w, const StepContext& context);
 void warmStartConstraints(WorldState& w);
 void solveConstraints(WorldState& w, const StepContext& context, bool useBias);
-void applyRestitution(WorldState& w);
 /// Throws impetus::Error naming the first invalid field of the world's settings
 /// (world_settings.cpp).
 void validateWorldDef(const WorldDef& def);

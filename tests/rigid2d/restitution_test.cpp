@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace impetus::rigid2d {
 namespace {
@@ -31,7 +32,7 @@ BodyId addFrictionlessBox(World& world, const Vec2f& position, float halfWidth, 
 }
 
 struct Rebound {
-  float speed = 0.0f;   ///< upward speed at the end of the step that bounced, m/s
+  float speed = 0.0f;   ///< speed it left the floor at (from the step that bounced: v^2 + 2 g y), m/s
   float apex = 0.0f;    ///< highest the box's bottom rose after the bounce, m
   float maxSpin = 0.0f; ///< largest |angular velocity| seen, rad/s
 };
@@ -53,7 +54,9 @@ Rebound dropFlatBox(float restitution, float height, float stepRate) {
     const float vy = world.linearVelocity(box).y;
     r.maxSpin = std::max(r.maxSpin, std::abs(world.angularVelocity(box)));
     if (vy > 0.0f && r.speed == 0.0f) {
-      r.speed = vy;
+      // The bounce happens within the step and gravity slows the box for the rest of it: its
+      // energy gives the speed it left the floor at.
+      r.speed = std::sqrt(vy * vy + 2.0f * 10.0f * (world.position(box).y - halfHeight));
     }
     if (r.speed > 0.0f) {
       r.apex = std::max(r.apex, world.position(box).y - halfHeight);
@@ -73,7 +76,8 @@ TEST(Restitution2D, a_box_dropped_flat_rebounds_to_e_squared_h_without_spin) {
       const Rebound r = dropFlatBox(e, h, rate);
       const auto label = [&] { return testing::Message() << rate << " Hz, e = " << e; };
       // Newton's law: the box leaves at e times the impact speed sqrt(2 g h). 1%: the approach is
-      // measured at the impact's substep, up to a substep's gravity (g dt / 4) after contact.
+      // measured at the start of the impact's substep, up to a substep's gravity (g dt / 4)
+      // before contact.
       EXPECT_NEAR(r.speed, e * impactSpeed, 0.01f * e * impactSpeed) << label();
       // A flat landing gives both corners the same impulse: no turn. (One point after the other,
       // it turned at 3 rad/s.)
@@ -144,6 +148,61 @@ TEST(Restitution2D, boxes_meeting_face_to_face_leave_with_the_1d_collision_veloc
         EXPECT_LT(r.spin, 1e-3f) << label();
         if (e == 1.0f) {
           EXPECT_NEAR(r.energyAfter, r.energyBefore, 0.01f * r.energyBefore) << label();
+        }
+      }
+    }
+  }
+}
+
+/// A row of `count` frictionless 1 m boxes along x without gravity, `gap` (m) apart; the first
+/// `strikers` of them, touching one another, move at `speed` towards the rest, which lie still.
+/// `reversed` makes the bodies in the opposite order (so the contacts are met in the opposite
+/// order by the solver). Returns each box's velocity along x after 2 s.
+std::vector<float> strikeRow(int count, int strikers, float gap, bool reversed, float stepRate, float speed) {
+  WorldDef def;
+  def.gravity = {0.0f, 0.0f};
+  World world(def);
+  std::vector<BodyId> boxes(static_cast<std::size_t>(count));
+  for (int j = 0; j < count; ++j) {
+    const int i = reversed ? count - 1 - j : j;
+    const float x = (1.0f + gap) * static_cast<float>(i) - (i < strikers ? 1.0f : 0.0f);
+    boxes[static_cast<std::size_t>(i)] = addFrictionlessBox(world, {x, 0.0f}, 0.5f, 0.5f, 1.0f);
+    if (i < strikers) {
+      world.setLinearVelocity(boxes[static_cast<std::size_t>(i)], {speed, 0.0f});
+    }
+  }
+  for (int k = 0; k < static_cast<int>(2.0f * stepRate); ++k) {
+    world.step(1.0f / stepRate);
+  }
+  std::vector<float> v;
+  for (const BodyId b : boxes) {
+    v.push_back(world.linearVelocity(b).x);
+  }
+  return v;
+}
+
+TEST(Restitution2D, a_row_of_touching_boxes_passes_the_impulse_to_the_last_as_newtons_cradle) {
+  // Each contact bounces when its approach is met, not once for the whole row: an elastic impact
+  // between equal masses swaps their velocities, so k strikers set the last k boxes moving at
+  // their speed and leave the rest at rest. Solved as one simultaneous problem instead, the row
+  // took the momentum together (the first box bounced back at half the speed, and 12% of the
+  // energy went). Within 2% of the speed at 240 Hz and 4% at 60 Hz: the strikers overlap the row
+  // by up to a substep's travel (8 mm at 60 Hz) before the bounce, and the soft contact pushing
+  // that overlap out trades a little momentum between neighbours.
+  const float speed = 2.0f;
+  const int count = 6;
+  for (const float rate : {60.0f, 240.0f}) {
+    for (const float gap : {0.0f, 0.001f, 0.02f}) {
+      for (const int strikers : {1, 2, 3}) {
+        for (const bool reversed : {false, true}) {
+          const std::vector<float> v = strikeRow(count, strikers, gap, reversed, rate, speed);
+          const float tolerance = (rate < 100.0f ? 0.04f : 0.02f) * speed;
+          for (int i = 0; i < count; ++i) {
+            const float expected = i >= count - strikers ? speed : 0.0f;
+            EXPECT_NEAR(v[static_cast<std::size_t>(i)], expected, tolerance)
+                << "box " << i << ", " << strikers << " strikers, gap " << gap << " m, " << rate << " Hz"
+                << (reversed ? ", made in reverse" : "");
+          }
         }
       }
     }

@@ -116,7 +116,6 @@ struct StepProfile {
   float solveConstraints = 0.0f;
   float integratePositions = 0.0f;
   float relax = 0.0f;
-  float restitution = 0.0f;
   float storeImpulses = 0.0f; ///< and the joints' break events
   float finalize = 0.0f;
 };

@@ -5,8 +5,9 @@
 // `substeps` times: integrate velocities (gravity, damping, forces), warm start, solve the soft
 // contact constraints with bias (they push overlap apart at a bounded speed, springy at
 // contactHertz with contactDampingRatio), integrate positions, and relax (solve again without
-// bias, removing the energy the bias added). Restitution is applied once at the end, for
-// contacts that approached faster than restitutionThreshold. Everything runs in a fixed order:
+// bias, removing the energy the bias added). Restitution acts within those passes, as an
+// impact at each point that meets faster than restitutionThreshold (so a struck row of touching
+// bodies passes the impulse along, Newton's cradle). Everything runs in a fixed order:
 // the same inputs give bit-identical results.
 //
 // Contacts are coloured so that a colour's constraints share no moving body: they are solved
