@@ -5,7 +5,7 @@
 
 namespace impetus::solver {
 
-/// The restitution pass solves a two-point manifold's normal rows as one 2x2 block (Box2D 2.4's
+/// A contact's impact (restitution) solves a two-point manifold's normal rows as one 2x2 block (Box2D 2.4's
 /// block solver). One pass over the points, one after the other, is not enough: the first point's
 /// impulse turns the body, and the second point's then leaves it spinning (a box landing flat
 /// with e = 0.8 rebounded to 46% of e^2 h at 3 rad/s). The block is used while its condition

@@ -1,8 +1,9 @@
 // Restitution of the soft-step solver against Newton's law of restitution: a box landing flat
-// rebounds to e^2 h without turning, and two boxes meeting face to face leave with the 1D
-// collision's velocities, whatever their rotational inertia. A two-point manifold's normal rows
-// are solved as a block in the restitution pass; solved one point after the other, the first
-// point's impulse turned the body and the second's left it spinning.
+// rebounds to e^2 h without turning, two boxes meeting face to face leave with the 1D
+// collision's velocities, whatever their rotational inertia, and a row of touching boxes struck
+// at one end passes the impulse to the other (Newton's cradle). A two-point manifold's normal
+// rows bounce as a block; one point after the other, the first point's impulse turned the body
+// and the second's left it spinning.
 #include <impetus/math/scalar.hpp>
 #include <impetus/rigid2d/world.hpp>
 
