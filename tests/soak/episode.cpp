@@ -8,10 +8,21 @@ namespace soak {
 
 namespace {
 
+/// m: how far a slider's B may slide either way along A's rail.
+constexpr float sliderTravel = 1.0f;
+
 WorldDef worldDef(TaskRunner* runner) {
   WorldDef def;
   def.taskRunner = runner;
   return def;
+}
+
+/// A body's effective mass at a lever arm r from its centre of mass, kg: m k^2 / (k^2 + r^2), k its
+/// radius of gyration (the mass a push across the arm meets: the body turns as much as it moves).
+double effectiveMass(const World& world, BodyId body, double lever) {
+  const double m = world.mass(body);
+  const double k2 = world.rotationalInertia(body) / m;
+  return m * k2 / (k2 + lever * lever);
 }
 
 /// A random joint between body A and body B placed against its right side (closed episodes: no
@@ -30,6 +41,22 @@ void addJoint(Episode& e, Random& rng, BodyId a, BodyId b, float extentA, bool c
   int kind = rng.below(closed ? 3 : 6);
   if (kind == 2 && !prismatic) {
     kind = rng.below(2); // a revolute or distance joint instead
+  }
+  // Inside the envelope the two bodies' effective masses at the joint's lever arms are within
+  // 10:1 (the mass ratio's rule, with turning counted): the pin `mid` for the revolute, prismatic
+  // and weld joints (and, on the rail's body, the slider's travel), the centres for the distance
+  // and motor joints, B's centre on A for the wheel.
+  if (e.inside) {
+    const auto lever = [&](BodyId body, const Vec2f& p) { return length(p - e.world.worldCenterOfMass(body)); };
+    const bool pinned = kind == 0 || kind == 2 || kind == 3;
+    const double leverA = pinned ? lever(a, mid) + (kind == 2 ? sliderTravel : 0.0f)
+                                 : (kind == 4 ? lever(a, pb) : lever(a, e.world.position(a)));
+    const double leverB = pinned ? lever(b, mid) : (kind == 4 ? 0.0 : lever(b, e.world.position(b)));
+    const double massA = effectiveMass(e.world, a, leverA);
+    const double massB = effectiveMass(e.world, b, leverB);
+    if (std::max(massA, massB) > insideMaxJointMassRatio * std::min(massA, massB)) {
+      return; // outside the envelope: no joint between these two
+    }
   }
   switch (kind) {
   case 0: {
@@ -71,8 +98,8 @@ void addJoint(Episode& e, Random& rng, BodyId a, BodyId b, float extentA, bool c
     d.localAnchorA = local(a, mid);
     d.localAnchorB = local(b, mid);
     d.enableLimit = true;
-    d.lowerTranslation = -1.0f;
-    d.upperTranslation = 1.0f;
+    d.lowerTranslation = -sliderTravel;
+    d.upperTranslation = sliderTravel;
     id = e.world.createJoint(d);
     break;
   }

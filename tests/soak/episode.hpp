@@ -45,7 +45,8 @@ constexpr float wallThickness = 5.0f;   ///< m
 constexpr float timeStep = 1.0f / 60.0f;
 
 /// The documented envelope: body half-sizes (m, log10 range), densities (kg/m^2: 0.1 to 10 times
-/// water's 1000 kg/m^3 over a metre's depth) and the largest mass ratio across a joint.
+/// water's 1000 kg/m^3 over a metre's depth) and the largest ratio across a joint of the two
+/// bodies' masses and of their effective masses at its lever arms (m k^2 / (k^2 + r^2); the plain mass ratio at r = 0).
 constexpr float insideMinLogHalfSize = -1.3f; // 5 cm: 0.1 m across
 constexpr float insideMaxLogHalfSize = 0.7f;  // 5 m: 10 m across
 constexpr float insideMinLogDensity = 2.0f;
@@ -66,8 +67,8 @@ struct Episode {
   std::vector<JointId> joints;   ///< live joints
   std::vector<BodyId> destroyed; ///< ids that must stay invalid
   std::vector<JointId> destroyedJoints;
-  /// Bodies a kinematic body drove into a wall: exempt from the arena bound for the rest of the
-  /// episode (drivenByKinematic).
+  /// Bodies a kinematic or much heavier body drove into a wall: exempt from the arena bound for
+  /// the rest of the episode (drivenIntoWall).
   std::vector<BodyId> drivenIntoWalls;
   bool closed = false;
   bool inside = true; ///< built inside the documented envelope (energy checked)
