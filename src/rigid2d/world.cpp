@@ -205,10 +205,6 @@ void updatePairs(WorldState& w) {
           if (other == slot || (w.movedShapes[other] != 0 && other < slot)) {
             return true;
           }
-          const std::uint64_t key = pairKey(slot, other);
-          if (w.contactByPair.contains(key)) {
-            return true;
-          }
           const Shape& o = w.shapes[other];
           if (o.body == s.body) {
             return true;
@@ -217,6 +213,12 @@ void updatePairs(WorldState& w) {
           const Body& bb = w.bodies[o.body];
           // Something must be able to respond.
           if (ba.type != BodyType::dynamicBody && bb.type != BodyType::dynamicBody) {
+            return true;
+          }
+          // The pair's contact, if it has one, is in both bodies' lists: a body without contacts
+          // (a cloth's jointed neighbours) spares the index's lookup, a cache miss in a big world.
+          const std::uint64_t key = pairKey(slot, other);
+          if (ba.contactHead != detail::noContactEdge && bb.contactHead != detail::noContactEdge && w.contactByPair.contains(key)) {
             return true;
           }
           if (!shouldCollide(s.filter, o.filter) || w.jointBlocksCollision(s.body, o.body)) {
