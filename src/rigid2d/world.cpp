@@ -218,7 +218,8 @@ void updatePairs(WorldState& w) {
           // The pair's contact, if it has one, is in both bodies' lists: a body without contacts
           // (a cloth's jointed neighbours) spares the index's lookup, a cache miss in a big world.
           const std::uint64_t key = pairKey(slot, other);
-          if (ba.contactHead != detail::noContactEdge && bb.contactHead != detail::noContactEdge && w.contactByPair.contains(key)) {
+          if (ba.contactHead != detail::noContactEdge && bb.contactHead != detail::noContactEdge &&
+              w.contactByPair.contains(key)) {
             return true;
           }
           if (!shouldCollide(s.filter, o.filter) || w.jointBlocksCollision(s.body, o.body)) {
