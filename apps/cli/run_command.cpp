@@ -24,7 +24,6 @@
 namespace impetus::cli {
 namespace {
 
-constexpr std::int64_t maxSteps = 100'000'000;
 
 /// The world's energies at one instant, J.
 struct Energies {
@@ -175,16 +174,16 @@ public:
 void validate(const RunOptions& o) {
   if (o.steps < 1 || o.steps > maxSteps) {
     throwInvalid("--steps", static_cast<double>(o.steps),
-                 "must be a whole number between 1 and " + std::to_string(maxSteps));
+                 "must be a whole number from 1 to " + std::to_string(maxSteps));
   }
   if (!(std::isfinite(o.dt) && o.dt > 0.0 && o.dt <= 1.0)) {
     throwInvalid("--dt", o.dt, "must be in (0, 1] s");
   }
-  if (o.every < 1) {
-    throwInvalid("--every", static_cast<double>(o.every), "must be a whole number >= 1");
+  if (o.every < 1 || o.every > maxSteps) {
+    throwInvalid("--every", static_cast<double>(o.every), "must be a whole number from 1 to " + std::to_string(maxSteps));
   }
   if (o.threads < 1 || o.threads > 64) {
-    throwInvalid("--threads", static_cast<double>(o.threads), "must be a whole number between 1 and 64");
+    throwInvalid("--threads", static_cast<double>(o.threads), "must be a whole number from 1 to 64");
   }
   if (!o.out.empty()) {
     const std::string ext = std::filesystem::path(o.out).extension().string();

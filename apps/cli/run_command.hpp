@@ -8,6 +8,9 @@
 
 namespace impetus::cli {
 
+/// The most steps one run takes.
+inline constexpr std::int64_t maxSteps = 100'000'000;
+
 struct RunOptions {
   std::string scene;      ///< path of the scene file
   std::int64_t steps = 0; ///< world steps to take, >= 1

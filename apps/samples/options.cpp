@@ -77,7 +77,7 @@ std::string usage() {
          "  impetus-samples --sample S --frames N --no-render\n"
          "                                                   simulate N frames without OpenGL\n"
          "\n"
-         "Keys: P pause, O single step, R reset, F12 screenshot (impetus-samples.png); mouse: left-drag a\n"
+         "Keys: P pause, O single step, R reset, F12 screenshot (impetus-samples-N.png); mouse: left-drag a\n"
          "body, right-drag to pan, wheel to zoom. Exit status 1 if the sample threw or produced NaN/inf, or\n"
          "the screenshot failed; 2 for a bad command line.\n";
 }

@@ -39,7 +39,13 @@ TEST(Cli, version_and_help_exit_zero) {
   EXPECT_NE(help.out.find("demo"), std::string::npos);
 }
 
-TEST(Cli, unknown_subcommand_exits_two) { EXPECT_EQ(impetus({"frobnicate"}).status, 2); }
+TEST(Cli, an_unknown_command_is_named_with_the_real_ones) {
+  const CliRun run = impetus({"frobnicate"});
+  expectUsageError(run, "unknown command 'frobnicate'");
+  for (const char* command : {"calc", "demo", "run"}) {
+    EXPECT_NE(run.err.find(command), std::string::npos) << run.err;
+  }
+}
 
 TEST(Cli, calc_list_json_describes_every_model_with_units) {
   const CliRun run = impetus({"calc", "--list", "--json"});
@@ -251,6 +257,59 @@ TEST(Cli, demo_writes_trajectory_csv) {
     ++rows;
   }
   EXPECT_GT(rows, 100);
+}
+
+TEST(Cli, every_model_help_lists_its_parameters_with_units_defaults_and_formula) {
+  // What docs/cli.md and the "unknown parameter" hint promise: the model's own parameters, not
+  // the generic calc usage; --json gives the same description calc --list --json has.
+  const CliRun listed = impetus({"calc", "--list", "--json"});
+  ASSERT_EQ(listed.status, 0);
+  for (const json& model : json::parse(listed.out)) {
+    const std::string name = model.at("name").get<std::string>();
+    const CliRun help = impetus({"calc", name, "--help"});
+    ASSERT_EQ(help.status, 0) << name << ": " << help.err;
+    EXPECT_NE(help.out.find(model.at("summary").get<std::string>()), std::string::npos) << name;
+    for (const json& p : model.at("params")) {
+      std::string line = "--" + p.at("name").get<std::string>();
+      if (!p.at("unit").get<std::string>().empty()) {
+        line += " [" + p.at("unit").get<std::string>() + "]";
+      }
+      EXPECT_NE(help.out.find(line), std::string::npos) << name << " lacks " << line << ":\n" << help.out;
+      if (p.at("default").is_string() && !p.at("default").get<std::string>().empty()) {
+        EXPECT_NE(help.out.find("(default " + p.at("default").get<std::string>() + ")"), std::string::npos) << name;
+      }
+    }
+    const CliRun asJson = impetus({"calc", name, "--help", "--json"});
+    ASSERT_EQ(asJson.status, 0) << name;
+    EXPECT_EQ(json::parse(asJson.out), model) << name;
+  }
+  EXPECT_NE(impetus({"calc", "--help"}).out.find("MODEL --help"), std::string::npos);
+}
+
+TEST(Cli, a_file_given_as_the_demo_output_directory_is_refused_naming_it) {
+  // Once an uncaught std::filesystem error: exit 134 (abort), a stack of text.
+  const std::string file = writeTemp("impetus_demo_out_is_a_file", "not a directory\n");
+  expectUsageError(impetus({"demo", "cannon", "--out", file}), "--out = " + file + ": is a file, not a directory");
+  expectUsageError(impetus({"demo", "--out", file}), "--out = " + file + ": is a file, not a directory");
+}
+
+TEST(Cli, number_errors_have_one_form_naming_the_option_the_text_and_the_reason) {
+  const std::string scene = writeTemp("impetus_numbers_scene.json", R"({"type": "particles", "particles": []})");
+  // The same range whichever way the number is written.
+  const char* steps = "must be a whole number from 1 to 100000000";
+  expectUsageError(impetus({"run", scene, "--steps", "1e12"}), std::string("--steps = 1e12: ") + steps);
+  expectUsageError(impetus({"run", scene, "--steps", "1000000000000"}),
+                   std::string("--steps = 1000000000000: ") + steps);
+  expectUsageError(impetus({"run", scene, "--steps", "many"}), std::string("--steps = many: ") + steps);
+  expectUsageError(impetus({"run", scene, "--steps", "10", "--dt", "x"}), "--dt = x: not a number");
+  expectUsageError(impetus({"run", scene, "--steps", "10", "--threads", "1e3"}),
+                   "--threads = 1e3: must be a whole number from 1 to 64");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "1e400", "--length", "1"}),
+                   "--mass = 1e400: overflows");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "1e-400", "--length", "1"}),
+                   "--mass = 1e-400: underflows");
+  expectUsageError(impetus({"calc", "hourglass", "--grain-count", "1e8"}), "to 1000000");
+  expectUsageError(impetus({"demo", "doppler", "--speed", "fast"}), "--speed = fast: not a number");
 }
 
 TEST(Cli, demos_run_and_unknown_demo_exits_two) {

@@ -139,7 +139,7 @@ Result hourglassModel(const Args& a) {
   HourglassSettings s;
   const double grains = a.number("grain-count");
   if (!(grains >= 1.0 && grains <= 1e6 && grains == std::floor(grains))) {
-    throwInvalid("grain-count", grains, "must be a whole number from 1");
+    throwInvalid("grain-count", grains, "must be a whole number from 1 to 1000000");
   }
   s.grainCount = static_cast<int>(grains);
   s.neckWidth = a.number("neck-width");

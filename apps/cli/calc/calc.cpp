@@ -1,5 +1,6 @@
 // Parsing, validation and printing for `impetus calc`.
 #include "calc/calc.hpp"
+#include "numbers.hpp"
 
 #include <impetus/error.hpp>
 
@@ -105,7 +106,7 @@ void printList(bool json) {
 }
 
 void printModelHelp(const Model& m) {
-  fmt::print("impetus calc {} [--param value ...] [--json]\n{}\n\nparameters:\n", m.name, m.summary);
+  fmt::print("impetus calc {} [--param value ...] [--json]\n{}\n({})\n\nparameters:\n", m.name, m.summary, m.topic);
   for (const Param& p : m.params) {
     fmt::print("{}\n", paramLine(p));
   }
@@ -161,7 +162,7 @@ Args parseArgs(const Model& model, const std::vector<std::string>& extra, bool& 
       it = values.emplace(p.name, *p.defaultValue).first;
     }
     if (p.kind == ParamKind::number) {
-      numbers[p.name] = parseNumber(p.name, it->second);
+      numbers[p.name] = parseParameter(p.name, it->second);
     }
   }
   return Args(std::move(values), std::move(numbers));
@@ -233,19 +234,12 @@ std::string asParameterMessage(const Model& model, const Error& e) {
 
 } // namespace
 
-double parseNumber(const std::string& name, const std::string& text) {
-  double value = 0.0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  // std::from_chars does not accept a leading '+'; allow it as people type it.
-  if (first != last && *first == '+') {
-    ++first;
+double parseParameter(const std::string& name, const std::string& text) {
+  try {
+    return cli::parseNumber("--" + name, text);
+  } catch (const Error& e) {
+    throw Error(name, e.what()); // the model's field, as the other refusals name it
   }
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (text.empty() || ec != std::errc() || ptr != last) {
-    throw Error(name, fmt::format("--{} = '{}': not a number", name, text));
-  }
-  return value;
 }
 
 double Args::number(const std::string& name) const {
@@ -317,7 +311,11 @@ int runCalc(bool list, bool json, const std::string& modelName, const std::vecto
     bool help = false;
     const Args args = parseArgs(*model, extraArgs, json, help);
     if (help) {
-      printModelHelp(*model);
+      if (json) {
+        fmt::print("{}\n", modelJson(*model).dump(2));
+      } else {
+        printModelHelp(*model);
+      }
       return 0;
     }
     const Result result = model->evaluate(args);

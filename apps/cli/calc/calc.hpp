@@ -83,7 +83,7 @@ private:
 
 /// Parses a number the way every parameter is parsed (a leading '+' is allowed; "nan" and
 /// "inf" parse and are left to the model to reject). Throws impetus::Error naming --name.
-[[nodiscard]] double parseNumber(const std::string& name, const std::string& text);
+[[nodiscard]] double parseParameter(const std::string& name, const std::string& text);
 
 /// Every model of the library, in a fixed order.
 [[nodiscard]] const Registry& registry();

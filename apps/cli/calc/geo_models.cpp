@@ -36,7 +36,7 @@ std::vector<double> parseNumbers(const std::string& name, const std::string& tex
   std::istringstream in(normalized);
   std::vector<double> values;
   for (std::string token; in >> token;) {
-    values.push_back(parseNumber(name, token));
+    values.push_back(parseParameter(name, token));
   }
   return values;
 }

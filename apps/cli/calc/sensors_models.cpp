@@ -18,7 +18,7 @@ std::vector<double> numberList(const Args& a, const std::string& name) {
   std::istringstream in(text);
   std::vector<double> values;
   for (std::string token; in >> token;) {
-    values.push_back(requireFinite(parseNumber(name, token), name));
+    values.push_back(requireFinite(parseParameter(name, token), name));
   }
   return values;
 }
@@ -31,8 +31,8 @@ std::vector<Vec2d> pointList(const Args& a, const std::string& name) {
     if (comma == std::string::npos) {
       throw Error(name, "--" + name + ": '" + token + "' is not x,y");
     }
-    points.push_back({requireFinite(parseNumber(name, token.substr(0, comma)), name),
-                      requireFinite(parseNumber(name, token.substr(comma + 1)), name)});
+    points.push_back({requireFinite(parseParameter(name, token.substr(0, comma)), name),
+                      requireFinite(parseParameter(name, token.substr(comma + 1)), name)});
   }
   return points;
 }

@@ -84,7 +84,7 @@ Result grid(const Args& a) {
     std::istringstream in(row);
     int n = 0;
     for (std::string token; in >> token; ++n) {
-      deltas.push_back(parseNumber("deltas", token));
+      deltas.push_back(parseParameter("deltas", token));
     }
     if (n == 0) {
       continue;

@@ -20,7 +20,7 @@ std::optional<double> optionalNumber(const Args& args, const std::string& name) 
   if (text.empty()) {
     return std::nullopt;
   }
-  return parseNumber(name, text);
+  return parseParameter(name, text);
 }
 
 Vec3d vector3(const Args& args, const std::string& name) {
@@ -29,7 +29,7 @@ Vec3d vector3(const Args& args, const std::string& name) {
   std::istringstream in(text);
   std::vector<double> values;
   for (std::string token; in >> token;) {
-    values.push_back(parseNumber(name, token));
+    values.push_back(parseParameter(name, token));
   }
   if (values.size() != 3) {
     throw Error(name, "--" + name + " = '" + args.text(name) + "': expected three numbers x,y,z");

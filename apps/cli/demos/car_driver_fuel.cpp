@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include <array>
+#include <cmath>
 
 namespace impetus::cli {
 
@@ -33,15 +34,24 @@ int demoCarDriverFuel(const DemoOptions& /*options*/) {
 
   fmt::print("fuel weight = rho g V = 750 x {} x {:.3f} = {:.2f} N\n", g, volume(fuelBox), fuelWeight);
   fmt::print("  (the book prints 920.6 N, which its own inputs do not give)\n\n");
-  fmt::print("{:<8} {:>10} {:>12} {:>10} {:>12} {:>12} {:>8}\n", "part", "mass kg", "I_local", "d^2 m^2", "m d^2",
-             "I_cg", "ratio");
+  fmt::print("{:<8} {:>10} {:>12} {:>10} {:>12} {:>12} {:>15}\n", "part", "mass kg", "I_local", "d^2 m^2", "m d^2",
+             "I_cg", "I_local / m d^2");
+  std::array<double, 3> ratios{};
   for (std::size_t i = 0; i < items.size(); ++i) {
     const Vec3d d = parts[i].position - body.centerOfMass;
     const double d2 = d.x * d.x + d.y * d.y; // about the axis out of the screen (z)
     const double local = parts[i].inertia(2, 2);
-    fmt::print("{:<8} {:>10.3f} {:>12.3f} {:>10.4f} {:>12.3f} {:>12.3f} {:>7.1f}%\n", items[i].name, parts[i].mass,
-               local, d2, parts[i].mass * d2, local + parts[i].mass * d2, 100.0 * local / (parts[i].mass * d2));
+    ratios[i] = local / (parts[i].mass * d2);
+    fmt::print("{:<8} {:>10.3f} {:>12.3f} {:>10.4f} {:>12.3f} {:>12.3f} {:>15.3f}\n", items[i].name, parts[i].mass,
+               local, d2, parts[i].mass * d2, local + parts[i].mass * d2, ratios[i]);
   }
+  // The last column is each part's own moment against its parallel-axis term: the car's centre is
+  // only centimetres from the whole's, so its own inertia is hundreds of times its transfer term;
+  // the small parts far out are the other way round.
+  const Vec3d carOffset = parts[0].position - body.centerOfMass;
+  fmt::print("(I_local / m d^2: the car's centre is {:.0f} mm from the whole's, so its own inertia is {:.0f} times "
+             "its transfer term; the driver's and the fuel's are {:.1f}% and {:.1f}% of theirs)\n",
+             1000.0 * std::hypot(carOffset.x, carOffset.y), ratios[0], 100.0 * ratios[1], 100.0 * ratios[2]);
   fmt::print("\ntotal weight  {:.2f} N, mass {:.2f} kg\n", body.mass * g, body.mass);
   fmt::print("centre of mass ({:.4f}, {:.4f}) m\n", body.centerOfMass.x, body.centerOfMass.y);
   fmt::print("Izz about it   {:.2f} kg m^2\n", body.inertia(2, 2));

@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include <impetus/error.hpp>
+
 #include <fstream>
 
 #include <functional>
@@ -38,6 +40,8 @@ const std::vector<Demo>& demos() {
   return all;
 }
 
+int runDemos(const std::string& name, bool list, const DemoOptions& options);
+
 } // namespace
 
 void writeCsv(const DemoOptions& options, const std::string& fileName, const std::string& header,
@@ -45,7 +49,7 @@ void writeCsv(const DemoOptions& options, const std::string& fileName, const std
   if (!options.outDir) {
     return;
   }
-  std::filesystem::create_directories(*options.outDir);
+  makeOutputDirectory(*options.outDir);
   const std::filesystem::path path = *options.outDir / fileName;
   std::ofstream out(path);
   out << header << '\n';
@@ -55,7 +59,36 @@ void writeCsv(const DemoOptions& options, const std::string& fileName, const std
   fmt::print("wrote {} ({} rows)\n", path.string(), rows.size());
 }
 
+void makeOutputDirectory(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+    throw Error("--out", fmt::format("--out = {}: is a file, not a directory (the demos write their CSV files into a "
+                                     "directory)",
+                                     dir.string()));
+  }
+  std::filesystem::create_directories(dir, ec);
+  if (ec) {
+    throw Error("--out", fmt::format("--out = {}: cannot make the directory ({})", dir.string(), ec.message()));
+  }
+}
+
 int runDemo(const std::string& name, bool list, const DemoOptions& options) {
+  try {
+    return runDemos(name, list, options);
+  } catch (const Error& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 2;
+  }
+}
+
+namespace {
+
+int runDemos(const std::string& name, bool list, const DemoOptions& options) {
+  // --out is checked before anything runs: a demo should not print its results and then fail.
+  // (doppler alone takes a .wav file.)
+  if (options.outDir && !(name == "doppler" && options.outDir->extension() == ".wav")) {
+    makeOutputDirectory(*options.outDir);
+  }
   if (list) {
     for (const Demo& d : demos()) {
       fmt::print("{:<18} {}\n", d.name, d.summary);
@@ -80,5 +113,7 @@ int runDemo(const std::string& name, bool list, const DemoOptions& options) {
   fmt::print(stderr, "error: unknown demo '{}' (impetus demo --list lists them)\n", name);
   return 2;
 }
+
+} // namespace
 
 } // namespace impetus::cli

@@ -29,7 +29,12 @@ inline constexpr int demoUnavailable = 3;
 void writeCsv(const DemoOptions& options, const std::string& fileName, const std::string& header,
               const std::vector<std::vector<double>>& rows);
 
-/// Runs the named demo ("" = all of them); exit status 0, or 2 for an unknown name.
+/// Makes the directory `dir` (and its parents) for --out; refuses, with an impetus::Error naming
+/// --out, a path that is a file or that cannot be made (its reason).
+void makeOutputDirectory(const std::filesystem::path& dir);
+
+/// Runs the named demo ("" = all of them); exit status 0, or 2 with one line on stderr for an
+/// unknown name or an --out that is not a directory.
 int runDemo(const std::string& name, bool list, const DemoOptions& options);
 
 // One function per demo (demos/<name>.cpp).

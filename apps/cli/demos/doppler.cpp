@@ -99,11 +99,11 @@ int demoDoppler(const DemoOptions& options) {
     const std::filesystem::path out = *options.outDir;
     std::filesystem::path wav = out;
     if (out.extension() != ".wav") {
-      std::filesystem::create_directories(out);
+      makeOutputDirectory(out);
       wav = out / "doppler.wav";
       writeCsv(options, "doppler.csv", "t_s,x_m,openal_formula_hz,retarded_formula_hz,measured_hz", rows);
     } else if (out.has_parent_path()) {
-      std::filesystem::create_directories(out.parent_path());
+      makeOutputDirectory(out.parent_path());
     }
     try {
       audio::writeWav(wav, render.clip);
