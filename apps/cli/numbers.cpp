@@ -47,8 +47,7 @@ std::int64_t parseWholeNumber(const std::string& option, const std::string& text
   } catch (const Error&) {
     throw Error(option, fmt::format("{} = {}: {}", option, text.empty() ? "''" : text, requirement));
   }
-  if (!(value >= static_cast<double>(lowest) && value <= static_cast<double>(highest)) ||
-      value != std::floor(value)) {
+  if (!(value >= static_cast<double>(lowest) && value <= static_cast<double>(highest)) || value != std::floor(value)) {
     throw Error(option, fmt::format("{} = {}: {}", option, text, requirement));
   }
   return static_cast<std::int64_t>(value);

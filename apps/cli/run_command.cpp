@@ -24,7 +24,6 @@
 namespace impetus::cli {
 namespace {
 
-
 /// The world's energies at one instant, J.
 struct Energies {
   double kinetic = 0.0;
@@ -180,7 +179,8 @@ void validate(const RunOptions& o) {
     throwInvalid("--dt", o.dt, "must be in (0, 1] s");
   }
   if (o.every < 1 || o.every > maxSteps) {
-    throwInvalid("--every", static_cast<double>(o.every), "must be a whole number from 1 to " + std::to_string(maxSteps));
+    throwInvalid("--every", static_cast<double>(o.every),
+                 "must be a whole number from 1 to " + std::to_string(maxSteps));
   }
   if (o.threads < 1 || o.threads > 64) {
     throwInvalid("--threads", static_cast<double>(o.threads), "must be a whole number from 1 to 64");

@@ -304,8 +304,7 @@ TEST(Cli, number_errors_have_one_form_naming_the_option_the_text_and_the_reason)
   expectUsageError(impetus({"run", scene, "--steps", "10", "--dt", "x"}), "--dt = x: not a number");
   expectUsageError(impetus({"run", scene, "--steps", "10", "--threads", "1e3"}),
                    "--threads = 1e3: must be a whole number from 1 to 64");
-  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "1e400", "--length", "1"}),
-                   "--mass = 1e400: overflows");
+  expectUsageError(impetus({"calc", "inertia-rod", "--mass", "1e400", "--length", "1"}), "--mass = 1e400: overflows");
   expectUsageError(impetus({"calc", "inertia-rod", "--mass", "1e-400", "--length", "1"}),
                    "--mass = 1e-400: underflows");
   expectUsageError(impetus({"calc", "hourglass", "--grain-count", "1e8"}), "to 1000000");
