@@ -1,14 +1,20 @@
 #include "json_fields.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace impetus::cli::json_fields {
 
 std::string readFile(const std::string& path) {
+  // An ifstream opens a directory and reads nothing from it: say what it is.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw Error("file", "file = " + path + ": is a directory, not a file");
+  }
   std::ifstream in(path);
   if (!in) {
-    throw Error("file", "file = " + path + ": cannot be read");
+    throw Error("file", "file = " + path + (std::filesystem::exists(path, ec) ? ": cannot be read" : ": no such file"));
   }
   std::stringstream buffer;
   buffer << in.rdbuf();

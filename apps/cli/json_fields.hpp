@@ -184,11 +184,29 @@ inline std::string snakeCase(const std::string& name) {
 
 /// Runs `build`, re-labelling an impetus::Error raised by the library ("mass = -1: ...") with
 /// the element's JSON path ("particles[3].mass = -1: ...").
-template <class F> auto at(const std::string& where, F&& build) {
+/// A library field's name in the file's words: {"halfWidth", "half_extents[0]"}.
+struct FieldName {
+  const char* library;
+  const char* file;
+};
+
+/// The file's word for a library field: the renamed one if listed, else its snake_case.
+inline std::string fileFieldName(const std::string& library, std::initializer_list<FieldName> renames) {
+  for (const FieldName& r : renames) {
+    if (library == r.library) {
+      return r.file;
+    }
+  }
+  return snakeCase(library);
+}
+
+/// Runs `build`; an impetus::Error it raises is re-raised under `where`, its field in the file's
+/// words (`renames` for the fields the file spells differently from the library).
+template <class F> auto at(const std::string& where, F&& build, std::initializer_list<FieldName> renames = {}) {
   try {
     return build();
   } catch (const Error& e) {
-    const std::string field = snakeCase(e.field());
+    const std::string field = fileFieldName(e.field(), renames);
     const std::string message = e.what();
     const std::string rest = message.rfind(e.field(), 0) == 0 ? message.substr(e.field().size()) : ": " + message;
     throw Error(where + "." + field, where + "." + field + rest);

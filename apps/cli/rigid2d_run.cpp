@@ -8,6 +8,7 @@
 
 #include <impetus/core/task_runner.hpp>
 #include <impetus/error.hpp>
+#include <impetus/math/scalar.hpp>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -18,6 +19,8 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace impetus::cli {
 namespace {
@@ -394,6 +397,18 @@ int runRigid2dScene(const RunOptions& o, const nlohmann::json& doc) {
   }
   EventLog events(o.events, scene);
 
+  // The step turns a body at most a quarter turn a substep; a scene's faster spin is capped at
+  // once, and the summary says so rather than leaving it to be discovered in the trajectory.
+  const double spinCap = 0.25 * pi<double> * world.settings().substeps / static_cast<double>(dt);
+  std::vector<std::string> capped;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const BodyId id = scene.bodies[i];
+    const double spin = std::abs(static_cast<double>(world.angularVelocity(id)));
+    if (world.bodyType(id) == BodyType::dynamicBody && spin > spinCap) {
+      capped.push_back(fmt::format("bodies[{}] at {:.6g} rad/s", i, spin));
+    }
+  }
+
   std::vector<BodyState> states;
   Totals start;
   bool finite = sample(scene, states, start);
@@ -450,6 +465,11 @@ int runRigid2dScene(const RunOptions& o, const nlohmann::json& doc) {
              count(n(all.hits), "hit", "hits"), all.fastestHit, count(n(all.breaks), "joint break", "joint breaks"),
              awakeDynamic(scene), dynamic, last.kinetic, last.potential, last.total(), start.kinetic, start.potential,
              start.total());
+  if (!capped.empty()) {
+    fmt::print(" Capped: {} started spinning faster than the quarter turn a substep the step allows ({:.6g} rad/s "
+               "at this dt) and turned at that rate.",
+               fmt::join(capped, ", "), spinCap);
+  }
   if (!o.out.empty()) {
     fmt::print(" Wrote {} ({} frames, {} body rows).", o.out, recorder->frames(), recorder->rows());
   }

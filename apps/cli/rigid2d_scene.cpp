@@ -249,7 +249,12 @@ void Loader::shape(BodyId id, BodyType bodyType, const json& j, const std::strin
     const Vec2f center = vec2(f, "center", {});
     const float angle = angleDeg(f, "angle_deg", 0.0f);
     f.done();
-    const Polygon p = at(where, [&] { return makeOffsetBox(half.x, half.y, center, angle); });
+    const Polygon p = at(where, [&] { return makeOffsetBox(half.x, half.y, center, angle); },
+                         {{"halfWidth", "half_extents[0]"},
+                          {"halfHeight", "half_extents[1]"},
+                          {"center.x", "center[0]"},
+                          {"center.y", "center[1]"},
+                          {"angle", "angle_deg"}});
     (void)at(where, [&] { return world.createShape(id, def, p); });
   } else if (type == "polygon") {
     const std::vector<Vec2f> pts = points(f, "points", 3, maxPolygonVertices);

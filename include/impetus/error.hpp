@@ -28,6 +28,9 @@ private:
 
 /// Formats a value the way error messages show it: shortest round-trip decimal, "nan", "inf".
 [[nodiscard]] std::string formatValue(double value);
+/// A float as error messages show it: its own shortest round-trip decimal (1e+30, not the
+/// 1.0000000150474662e+30 of its double).
+[[nodiscard]] std::string formatFloat(float value);
 
 /// Throws Error("<field> = <value>: <requirement>").
 [[noreturn]] void throwInvalid(std::string_view field, double value, std::string_view requirement);

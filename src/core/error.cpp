@@ -20,6 +20,15 @@ std::string formatValue(double value) {
   return {buffer.data(), result.ptr};
 }
 
+std::string formatFloat(float value) {
+  if (!std::isfinite(value)) {
+    return formatValue(value);
+  }
+  std::array<char, 32> buffer{};
+  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return {buffer.data(), result.ptr};
+}
+
 void throwInvalid(std::string_view field, double value, std::string_view requirement) {
   std::string message;
   message.append(field).append(" = ").append(formatValue(value)).append(": ").append(requirement);

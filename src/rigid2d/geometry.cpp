@@ -76,7 +76,7 @@ CastOutput first(const CastOutput& a, const CastOutput& b) {
 /// Shape coordinates and radii are bounded (maxPolygonCoordinate).
 void requireCoordinate(float value, const std::string& field) {
   if (std::abs(value) > maxPolygonCoordinate) {
-    throwInvalid(field, value, "must be within 1e6 m of the body origin (maxPolygonCoordinate)");
+    throwInvalid(field, value, "must be within 1e6 m of the body origin");
   }
 }
 
@@ -95,7 +95,7 @@ void requireRadius(float value, const std::string& field, bool zeroAllowed) {
     requirePositive(value, field);
   }
   if (value > maxPolygonCoordinate) {
-    throwInvalid(field, value, "must be at most 1e6 m (maxPolygonCoordinate)");
+    throwInvalid(field, value, "must be at most 1e6 m");
   }
 }
 

@@ -407,7 +407,7 @@ std::size_t World::contactCount() const noexcept {
 // Here rather than with the other body setters: a teleport moves the body's shapes in the
 // broadphase (synchronizeShapes), as the step's finalize does.
 void World::setTransform(BodyId id, const Vec2f& position, float angle) {
-  requireFinite(position, "position");
+  detail::requireWorldPosition(position);
   requireFinite(angle, "angle");
   Impl& w = *impl_;
   Body& b = w.body(id);

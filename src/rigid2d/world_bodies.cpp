@@ -73,9 +73,9 @@ void updateMass(WorldState& w, Body& b) {
 } // namespace
 
 BodyId World::createBody(const BodyDef& def) {
-  requireFinite(def.position, "position");
+  detail::requireWorldPosition(def.position);
   requireFinite(def.angle, "angle");
-  requireFinite(def.linearVelocity, "linearVelocity");
+  detail::requireWithinSpeedLimit(def.linearVelocity, impl_->def.maxLinearSpeed);
   requireFinite(def.angularVelocity, "angularVelocity");
   requireNonNegative(def.linearDamping, "linearDamping");
   requireNonNegative(def.angularDamping, "angularDamping");
@@ -318,7 +318,7 @@ void World::setMassData(BodyId id, const MassData& massData) {
 void World::setLinearVelocity(BodyId id, const Vec2f& v) {
   Body& b = impl_->body(id);
   // Checked before the body's type: a NaN is a caller's bug even where the value is ignored.
-  requireFinite(v, "linearVelocity");
+  detail::requireWithinSpeedLimit(v, impl_->def.maxLinearSpeed);
   if (b.type != BodyType::staticBody) {
     b.linearVelocity = v;
     detail::wakeBody(*impl_, id.index);

@@ -11,7 +11,9 @@
 #include <impetus/core/task_runner.hpp>
 #include <impetus/error.hpp>
 #include <impetus/math/scalar.hpp>
+#include <impetus/math/validate.hpp>
 #include <impetus/rigid2d/chain.hpp>
+#include <impetus/rigid2d/constants.hpp>
 #include <impetus/rigid2d/distance.hpp>
 #include <impetus/rigid2d/dynamic_tree.hpp>
 #include <impetus/rigid2d/joint.hpp>
@@ -22,9 +24,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -423,6 +427,29 @@ void solveConstraints(WorldState& w, const StepContext& context, bool useBias);
 /// Throws impetus::Error naming the first invalid field of the world's settings
 /// (world_settings.cpp).
 void validateWorldDef(const WorldDef& def);
+
+/// A body's place: finite and within maxWorldCoordinate of the origin on each axis (Error
+/// naming position.x or position.y).
+inline void requireWorldPosition(const Vec2f& p) {
+  requireFinite(p, "position");
+  for (const auto& [field, value] : {std::pair{"position.x", p.x}, std::pair{"position.y", p.y}}) {
+    if (std::abs(value) > maxWorldCoordinate) {
+      throw Error(field, std::string(field) + " = " + formatFloat(value) + ": must be within 1e6 m of the world origin");
+    }
+  }
+}
+
+/// A velocity the world can carry: finite and no faster than its maxLinearSpeed (the step would
+/// cap it without a word). The speed in double: 1e30 m/s squares past a float.
+inline void requireWithinSpeedLimit(const Vec2f& v, float maxLinearSpeed) {
+  requireFinite(v, "linearVelocity");
+  const double speed = std::hypot(static_cast<double>(v.x), static_cast<double>(v.y));
+  if (speed > maxLinearSpeed) {
+    throw Error("linearVelocity", "linearVelocity = " + formatFloat(static_cast<float>(speed)) +
+                                      " m/s: must be at most the world's maxLinearSpeed, " +
+                                      formatFloat(maxLinearSpeed) + " m/s");
+  }
+}
 /// Throws impetus::Error naming constraintHertz or constraintDampingRatio when invalid
 /// (world_joints.cpp).
 void validateConstraintTuning(float hertz, float dampingRatio);

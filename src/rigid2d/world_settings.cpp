@@ -6,12 +6,21 @@
 #include <impetus/error.hpp>
 #include <impetus/math/validate.hpp>
 
+#include <cmath>
+#include <string>
+
 namespace impetus::rigid2d {
 
 namespace detail {
 
 void validateWorldDef(const WorldDef& def) {
   requireFinite(def.gravity, "gravity");
+  // In double: 1e38 m/s^2 squares past a float.
+  if (const double g = std::hypot(static_cast<double>(def.gravity.x), static_cast<double>(def.gravity.y));
+      g > maxGravity) {
+    throw Error("gravity", "gravity = " + formatFloat(static_cast<float>(g)) +
+                               " m/s^2: must be at most 1e4 m/s^2 in magnitude (1000 g)");
+  }
   if (def.substeps < 1 || def.substeps > 64) {
     throwInvalid("substeps", def.substeps, "must be between 1 and 64");
   }

@@ -311,6 +311,32 @@ TEST(Cli, number_errors_have_one_form_naming_the_option_the_text_and_the_reason)
   expectUsageError(impetus({"demo", "doppler", "--speed", "fast"}), "--speed = fast: not a number");
 }
 
+TEST(Cli, errors_name_the_users_words) {
+  // Another parameter named in the reason is spelled as the user types it.
+  expectUsageError(
+      impetus({"calc", "inertia-hollow-sphere", "--mass", "1", "--inner-radius", "2", "--outer-radius", "1"}),
+      "--inner-radius = 2: must not exceed --outer-radius");
+  // A directory given as a file is said to be one (it read as empty JSON).
+  const std::string dir = ::testing::TempDir();
+  expectUsageError(impetus({"run", dir, "--steps", "1"}), "is a directory, not a file");
+  expectUsageError(impetus({"calc", "composite", "--file", dir}), "is a directory, not a file");
+  expectUsageError(impetus({"run", dir + "no_such_scene.json", "--steps", "1"}), "no such file");
+}
+
+TEST(Cli, a_spin_beyond_the_steps_cap_is_reported_in_the_run_summary) {
+  // 1e38 rad/s is finite and the step turns the body at most a quarter turn a substep (188.5
+  // rad/s at 60 Hz with 4 substeps): said, not done in silence.
+  const std::string scene = writeTemp(
+      "impetus_spin_cap.json",
+      R"({"kind": "rigid2d", "bodies": [{"type": "dynamic", "angular_velocity": 1e38, "shapes": [{"type": "circle", "radius": 1}]},
+                                         {"type": "dynamic", "position": [5, 0], "angular_velocity": 100, "shapes": [{"type": "circle", "radius": 1}]}]})");
+  const CliRun run = impetus({"run", scene, "--steps", "2"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("Capped: bodies[0] at 1e+38 rad/s"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("(188.496 rad/s at this dt)"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("bodies[1]"), std::string::npos) << run.out; // under the cap
+}
+
 TEST(Cli, demos_run_and_unknown_demo_exits_two) {
   const CliRun car = impetus({"demo", "car-driver-fuel"});
   EXPECT_EQ(car.status, 0);

@@ -259,7 +259,7 @@ TEST(Run, bad_arguments_exit_two_with_one_line) {
   expectUsageError(impetus({"run", scene, "--steps", "10", "--every", "0"}), "--every = 0");
   expectUsageError(impetus({"run", scene, "--steps", "10", "--out", tempPath("t.txt")}), ".csv or .json");
   expectUsageError(impetus({"run", scene}), "--steps");
-  expectUsageError(impetus({"run", tempPath("missing.json"), "--steps", "10"}), "cannot be read");
+  expectUsageError(impetus({"run", tempPath("missing.json"), "--steps", "10"}), "no such file");
 }
 
 } // namespace

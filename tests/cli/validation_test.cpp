@@ -255,6 +255,12 @@ TEST(CliValidation, rigid2d_world_materials_and_bodies) {
           {body2d(R"("position": [0])"), "bodies[0].position: expected an array of 2 numbers"},
           {body2d(R"("angle_deg": "up")"), "bodies[0].angle_deg: expected a number"},
           {body2d(R"("linear_velocity": [1e39, 0])"), "bodies[0].linear_velocity[0] = 1e+39"},
+          // Finite but beyond the envelope: refused, not clamped or frozen in silence.
+          {body2d(R"("position": [1e30, 1e30])"),
+           "bodies[0].position.x = 1e+30: must be within 1e6 m of the world origin"},
+          {body2d(R"("linear_velocity": [1e30, 0])"),
+           "bodies[0].linear_velocity = 1e+30 m/s: must be at most the world's maxLinearSpeed, 400 m/s"},
+          {world2d(R"("gravity": [0, -1e38])"), "gravity = 1e+38 m/s^2: must be at most 1e4 m/s^2"},
           {body2d(R"("angular_velocity": -1e39)"), "bodies[0].angular_velocity = -1e+39"},
           {body2d(R"("linear_damping": -1)"), "bodies[0].linear_damping = -1"},
           {body2d(R"("angular_damping": -1)"), "bodies[0].angular_damping = -1"},
@@ -286,6 +292,9 @@ TEST(CliValidation, rigid2d_shapes) {
           {shape2d(R"("type": "circle", "radius": -1)"), "bodies[0].shapes[0].radius = -1"},
           {shape2d(R"("type": "circle", "radius": 1, "center": [1e39, 0])"), "bodies[0].shapes[0].center[0] = 1e+39"},
           {shape2d(R"("type": "box", "half_extents": [1, 0])"), "bodies[0].shapes[0].half_extents[1] = 0"},
+          // The file's words, not the library's (half_width, maxPolygonCoordinate).
+          {shape2d(R"("type": "box", "half_extents": [1e7, 1])"),
+           "bodies[0].shapes[0].half_extents[0] = 1e+07: must be within 1e6 m of the body origin"},
           {shape2d(R"("type": "box", "half_extents": [1, 1e-50])"), "bodies[0].shapes[0].half_extents[1] = 0"},
           {shape2d(R"("type": "polygon", "points": [[0, 0], [1, 1], [2, 2]])"),
            "bodies[0].shapes[0].points = 0: the points are collinear or coincident"},

@@ -567,12 +567,12 @@ TEST(World2D, cast_shape_hits_where_geometry_says) {
 TEST(World2D, spin_is_capped_at_a_quarter_turn_a_substep_unless_the_body_allows_fast_rotation) {
   for (const bool fast : {false, true}) {
     WorldDef def;
-    def.gravity = {0.0f, 0.0f};
+    def.gravity = {6000.0f, 0.0f}; // 100 m/s more in a step: pushed past the speed cap
     World world(def);
     BodyDef body;
     body.type = BodyType::dynamicBody;
     body.angularVelocity = 1000.0f;
-    body.linearVelocity = {1000.0f, 0.0f};
+    body.linearVelocity = {def.maxLinearSpeed, 0.0f}; // faster is refused (a_body_beyond_the_envelope_...)
     body.allowFastRotation = fast;
     const BodyId id = world.createBody(body);
     world.createShape(id, {}, Circle{{}, 0.5f});
@@ -581,6 +581,34 @@ TEST(World2D, spin_is_capped_at_a_quarter_turn_a_substep_unless_the_body_allows_
     EXPECT_NEAR(world.angularVelocity(id), fast ? 1000.0f : cap, fast ? 1e-3f : 1e-3f * cap) << fast;
     EXPECT_NEAR(world.position(id).x, def.maxLinearSpeed / 60.0f, 1e-3f) << fast;
   }
+}
+
+TEST(World2D, a_body_or_gravity_beyond_the_envelope_is_refused_not_clamped) {
+  // Once accepted in silence: a body at 1e30 m (frozen by float spacing, reporting 7.7e30 J), a
+  // velocity of 1e30 m/s and a gravity of 1e38 m/s^2, which the step capped without a word.
+  WorldDef strong;
+  strong.gravity = {0.0f, -1e38f};
+  expectErrorField([&] { World w(strong); }, "gravity");
+  World world;
+  expectErrorField([&] { world.setGravity({2e4f, 0.0f}); }, "gravity");
+  BodyDef far;
+  far.type = BodyType::dynamicBody;
+  far.position = {1e30f, 0.0f};
+  expectErrorField([&] { (void)world.createBody(far); }, "position.x");
+  far.position = {0.0f, -2e6f};
+  expectErrorField([&] { (void)world.createBody(far); }, "position.y");
+  BodyDef fast;
+  fast.type = BodyType::dynamicBody;
+  fast.linearVelocity = {0.0f, 1e30f};
+  expectErrorField([&] { (void)world.createBody(fast); }, "linearVelocity");
+  fast.linearVelocity = {};
+  const BodyId id = world.createBody(fast);
+  expectErrorField([&] { world.setLinearVelocity(id, {401.0f, 0.0f}); }, "linearVelocity");
+  expectErrorField([&] { world.setTransform(id, {0.0f, 1e7f}, 0.0f); }, "position.y");
+  // The bounds themselves are in.
+  world.setLinearVelocity(id, {400.0f, 0.0f});
+  world.setTransform(id, {1e6f, -1e6f}, 0.0f);
+  world.setGravity({0.0f, -1e4f});
 }
 
 } // namespace

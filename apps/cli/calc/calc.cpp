@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -213,8 +214,45 @@ std::string kebabCase(const std::string& field) {
   return out;
 }
 
-/// Rewrites "innerRadius = 2: ..." as "--inner-radius = 2: ..." when the library's field is one
-/// of the model's parameters, so the message names what the user typed.
+/// The library's camelCase name of a parameter: "inner-radius" -> "innerRadius".
+std::string camelCase(const std::string& param) {
+  std::string out;
+  for (std::size_t i = 0; i < param.size(); ++i) {
+    if (param[i] == '-' && i + 1 < param.size()) {
+      out += static_cast<char>(std::toupper(static_cast<unsigned char>(param[++i])));
+    } else {
+      out += param[i];
+    }
+  }
+  return out;
+}
+
+/// The reason of a message ("must not exceed outerRadius") with every other parameter of the
+/// model that it names spelled as the user types it ("must not exceed --outer-radius").
+std::string withParameterNames(const Model& model, std::string reason) {
+  for (const Param& p : model.params) {
+    const std::string library = camelCase(p.name);
+    if (library == p.name) {
+      continue; // one word: the same in both spellings, and too common to rewrite in prose
+    }
+    for (std::size_t at = reason.find(library); at != std::string::npos; at = reason.find(library, at)) {
+      const bool wordStart = at == 0 || !std::isalnum(static_cast<unsigned char>(reason[at - 1]));
+      const std::size_t end = at + library.size();
+      const bool wordEnd = end == reason.size() || !std::isalnum(static_cast<unsigned char>(reason[end]));
+      if (wordStart && wordEnd) {
+        reason.replace(at, library.size(), "--" + p.name);
+        at += p.name.size() + 2;
+      } else {
+        at = end;
+      }
+    }
+  }
+  return reason;
+}
+
+/// Rewrites "innerRadius = 2: must not exceed outerRadius" as "--inner-radius = 2: must not
+/// exceed --outer-radius" when the library's field is one of the model's parameters, so the
+/// message names what the user typed.
 std::string asParameterMessage(const Model& model, const Error& e) {
   std::string what = e.what();
   const auto isParam = [&](const std::string& name) {
@@ -222,12 +260,12 @@ std::string asParameterMessage(const Model& model, const Error& e) {
   };
   const std::string param = kebabCase(e.field());
   if (isParam(param) && what.rfind(e.field(), 0) == 0) {
-    return "--" + param + what.substr(e.field().size());
+    return "--" + param + withParameterNames(model, what.substr(e.field().size()));
   }
   // A component of a vector parameter: "fluidVelocity.x = nan: ..." -> "--fluid-velocity.x = nan: ...".
   const std::size_t dot = e.field().rfind('.');
   if (dot != std::string::npos && isParam(kebabCase(e.field().substr(0, dot))) && what.rfind(e.field(), 0) == 0) {
-    return "--" + kebabCase(e.field().substr(0, dot)) + what.substr(dot);
+    return "--" + kebabCase(e.field().substr(0, dot)) + withParameterNames(model, what.substr(dot));
   }
   return what;
 }

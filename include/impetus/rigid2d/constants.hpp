@@ -19,4 +19,13 @@ inline constexpr float aabbMargin = 0.1f;
 /// Polygons have at most this many vertices (a convex hull of more points is an error).
 inline constexpr int maxPolygonVertices = 8;
 
+/// Bodies are placed within this distance of the world's origin on each axis, m: at 1e6 m a
+/// float's spacing is 6 cm, already twelve times linearSlop; beyond, contacts, joints and
+/// sleeping lose their meaning (a body at 1e30 m cannot move at all).
+inline constexpr float maxWorldCoordinate = 1.0e6f;
+
+/// The strongest gravity a world takes, m/s^2 (1000 g): stronger, a body gains more than a
+/// substep's worth of the speed cap from gravity alone in a 60 Hz step.
+inline constexpr float maxGravity = 1.0e4f;
+
 } // namespace impetus::rigid2d
