@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -335,6 +336,38 @@ TEST(Cli, a_spin_beyond_the_steps_cap_is_reported_in_the_run_summary) {
   EXPECT_NE(run.out.find("Capped: bodies[0] at 1e+38 rad/s"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("(188.496 rad/s at this dt)"), std::string::npos) << run.out;
   EXPECT_EQ(run.out.find("bodies[1]"), std::string::npos) << run.out; // under the cap
+}
+
+TEST(Cli, outputs_a_script_reads_are_always_there_and_typed) {
+  // Nearly antipodal points: Vincenty does not converge, yet `distance` is there (the geodesic's),
+  // or, in a build without GeographicLib, the pair is refused.
+  const CliRun v = impetus({"calc", "vincenty", "--from", "0,0", "--to", "0.5,179.7", "--json"});
+  if (v.status == 0) {
+    const json doc = json::parse(v.out);
+    EXPECT_FALSE(doc.at("outputs").at("converged").at("value").get<bool>());
+    EXPECT_EQ(doc.at("outputs").at("method").at("value").get<std::string>(), "geodesic");
+    EXPECT_DOUBLE_EQ(output(doc, "distance"), output(doc, "geodesic_distance"));
+    EXPECT_NEAR(output(doc, "distance"), 19944127.42, 0.01); // GeographicLib's geodesic
+  } else {
+    expectUsageError(v, "nearly antipodal");
+  }
+  // A converging pair keeps Vincenty's answer.
+  const CliRun near = impetus({"calc", "vincenty", "--from", "0,0", "--to", "1,1", "--json"});
+  ASSERT_EQ(near.status, 0) << near.err;
+  EXPECT_EQ(json::parse(near.out).at("outputs").at("method").at("value").get<std::string>(), "vincenty");
+  // Every output of gps-clock is a number, the MHz one included.
+  const CliRun clock = impetus({"calc", "gps-clock", "--json"});
+  ASSERT_EQ(clock.status, 0) << clock.err;
+  for (const auto& [name, value] : json::parse(clock.out).at("outputs").items()) {
+    EXPECT_TRUE(value.at("value").is_number()) << name;
+  }
+  EXPECT_NEAR(output(json::parse(clock.out), "corrected_frequency_mhz"), 10.22999999543, 2e-11);
+  // oscillator-stability's keys spell each method as --method does.
+  const CliRun osc = impetus({"calc", "oscillator-stability", "--omega-dt", "2.5", "--json"});
+  ASSERT_EQ(osc.status, 0) << osc.err;
+  const json oscillator = json::parse(osc.out);
+  EXPECT_NEAR(output(oscillator, "amplification.explicit-euler"), std::sqrt(1.0 + 2.5 * 2.5), 1e-12); // sqrt(1+z^2)
+  EXPECT_TRUE(oscillator.at("outputs").contains("energy_log10.semi-implicit-euler"));
 }
 
 TEST(Cli, demos_run_and_unknown_demo_exits_two) {

@@ -318,9 +318,10 @@ void registerForceModels(Registry& registry) {
   registry.add({"friction", topic,
                 "block at rest pushed on level ground: held if |F| <= mu_s m g, else slides against mu_k m g",
                 frictionInputs, friction});
-  std::vector<Param> inclineInputs{{"mass", "kg", "mass of the block", "1"},
-                                   {"incline-angle-deg", "deg", "slope angle, 0 to 90", std::nullopt},
-                                   gravityParam()};
+  std::vector<Param> inclineInputs{
+      {"mass", "kg", "mass of the block", "1"},
+      {"incline-angle-deg", "deg", "slope angle above the horizontal, 0 to 90", std::nullopt},
+      gravityParam()};
   for (Param& p : frictionParams()) {
     inclineInputs.push_back(std::move(p));
   }

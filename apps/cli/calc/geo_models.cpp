@@ -139,18 +139,34 @@ Result vincenty(const Args& a) {
   const Ellipsoid e = ellipsoidArgs(a);
   Result r;
   const std::optional<VincentyResult> v = vincentyInverse(from, to, e);
+  // A script reads `distance` whatever the points: where Vincenty's iteration fails (nearly
+  // antipodal points) the answer is the exact geodesic, said in `method`; a build without
+  // GeographicLib has none to give and refuses the pair.
+#if IMPETUS_HAVE_GEO
+  const GeodesicResult g = geodesicInverse(from, to, e);
+#endif
   r.add("converged", v.has_value(), "", "false for nearly antipodal points");
   if (v) {
+    r.add("method", std::string("vincenty"), "", "what gave the distance and azimuths");
     r.add("distance", v->distance, "m", "along the ellipsoid");
     r.add("initial_azimuth", v->initialAzimuth, "deg");
     r.add("final_azimuth", v->finalAzimuth, "deg");
     r.add("iterations", static_cast<double>(v->iterations));
   } else {
-    r.notes.emplace_back("Vincenty's iteration does not converge for these nearly antipodal points; the geodesic "
-                         "(impetus calc geodesic, GeographicLib) answers everywhere");
+#if IMPETUS_HAVE_GEO
+    r.add("method", std::string("geodesic"), "", "Vincenty did not converge: GeographicLib's geodesic instead");
+    r.add("distance", g.distance, "m", "along the ellipsoid (the geodesic)");
+    r.add("initial_azimuth", g.initialAzimuth, "deg");
+    r.add("final_azimuth", g.finalAzimuth, "deg");
+    r.notes.emplace_back("Vincenty's iteration does not converge for these nearly antipodal points; the distance and "
+                         "azimuths are the geodesic's (GeographicLib, Karney)");
+#else
+    throw Error("to", "to = " + a.text("to") + ": nearly antipodal to --from " + a.text("from") +
+                          ", where Vincenty's iteration does not converge (a build with GeographicLib answers with "
+                          "the geodesic)");
+#endif
   }
 #if IMPETUS_HAVE_GEO
-  const GeodesicResult g = geodesicInverse(from, to, e);
   r.add("geodesic_distance", g.distance, "m", "GeographicLib (Karney), the reference");
   if (v) {
     r.add("difference", v->distance - g.distance, "m", "Vincenty minus geodesic");

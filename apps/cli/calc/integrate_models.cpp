@@ -39,12 +39,10 @@ Integrator methodFromArgs(const Args& a) {
 }
 
 /// "explicit-euler" -> "explicit_euler", for output names.
-std::string outputName(Integrator m) {
-  std::string s(integratorName(m));
-  for (char& c : s) {
-    c = c == '-' ? '_' : c;
-  }
-  return s;
+/// A per-method output's key: the quantity, then the method as --method spells it
+/// ("amplification.explicit-euler"), so a script can look a method up by the name it passes.
+std::string outputName(const char* quantity, Integrator m) {
+  return std::string(quantity) + "." + std::string(integratorName(m));
 }
 
 /// The ship m dv/dt = T - C v, ds/dt = v from rest, integrated to `time` with steps of `step`
@@ -151,12 +149,12 @@ Result oscillatorStability(const Args& a) {
   Result r;
   for (Integrator m : kMethods) {
     const double g = oscillatorAmplification(m, z);
-    r.add(outputName(m), g, "", "amplitude factor per step (1 = energy-neutral)");
+    r.add(outputName("amplification", m), g, "", "amplitude factor per step (1 = energy-neutral)");
   }
   for (Integrator m : kMethods) {
     // E_N / E_0 ~ |lambda|^(2N) (exactly so for the Runge-Kutta family, whose step is |lambda|
     // times a rotation); as a power of ten, since it overflows a double for unstable z.
-    r.add(outputName(m) + "_energy_log10", 2.0 * steps * std::log10(oscillatorAmplification(m, z)), "",
+    r.add(outputName("energy_log10", m), 2.0 * steps * std::log10(oscillatorAmplification(m, z)), "",
           "log10 of the energy ratio after --steps steps, 2 N log10|lambda|");
   }
   r.notes.emplace_back("explicit Euler sqrt(1+z^2), Heun and midpoint sqrt(1+z^4/4) always grow; RK4 decays "

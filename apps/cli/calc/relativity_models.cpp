@@ -47,8 +47,7 @@ Result gps(const Args& a) {
   r.add("net_ns_per_day", d.netNanosecondsPerDay, "ns/day");
   r.add("net_rate", d.netRate, "", "fractional, satellite relative to ground");
   r.add("corrected_frequency", d.correctedFrequency, "Hz", "to set on the satellite so the ground sees nominal");
-  r.add("corrected_frequency_mhz", fmt::format("{:.11f}", d.correctedFrequency * 1e-6), "MHz",
-        "the same, to the book's 11 decimals");
+  r.add("corrected_frequency_mhz", d.correctedFrequency * 1e-6, "MHz", "the same in MHz (the book gives 11 decimals)");
   r.add("frequency_offset", d.correctedFrequency - in.nominalFrequency, "Hz", "corrected minus nominal");
   r.add("range_error_per_day", d.rangeErrorPerDay, "m", "c times the uncorrected drift over a day");
   r.notes.emplace_back("the book's net '+38,640 ns/day' is 45,850 - 7,214 = 38,636 ns/day; the spec's radii give "
