@@ -35,8 +35,6 @@ using json_fields::vec2;
 using nlohmann::json;
 using namespace rigid2d;
 
-constexpr std::size_t maxBodies = 1'000'000;
-
 } // namespace
 
 namespace rigid2d_loader {
@@ -123,8 +121,8 @@ Material Loader::material(Fields& f, Material m) {
 
 void Loader::body(const json& j, const std::string& where) {
   Fields f(j, where);
-  if (scene_.bodies.size() >= maxBodies) {
-    fail(where, "more than " + std::to_string(maxBodies) + " bodies in the scene");
+  if (scene_.bodies.size() >= maxSceneBodies) {
+    fail(where, "more than " + std::to_string(maxSceneBodies) + " bodies in the scene");
   }
   const std::string name = nameOf(f);
   if (!name.empty()) {

@@ -15,6 +15,9 @@
 
 namespace impetus::cli {
 
+/// The most bodies a rigid2d scene file may hold.
+inline constexpr std::size_t maxSceneBodies = 1'000'000;
+
 /// A loaded 2D scene: the world, ready to step, its effectors, and what the file asked for.
 struct Rigid2dScene {
   std::string description;

@@ -210,8 +210,10 @@ int runScene(const RunOptions& o) {
   try {
     validate(o);
     // "kind" picks the loader: particles (the default) or rigid2d (docs/scene-format-2d.md).
-    nlohmann::json doc =
-        json_fields::parseObject(json_fields::readFile(o.scene), "a JSON object (docs/scene-format.md)");
+    const std::string text = json_fields::readFile(o.scene);
+    json_fields::requireArrayLimits(
+        text, {{"bodies", maxSceneBodies}, {"particles", static_cast<std::size_t>(maxSceneParticles)}});
+    nlohmann::json doc = json_fields::parseObject(text, "a JSON object (docs/scene-format.md)");
     if (sceneKind(doc) == "rigid2d") {
       return runRigid2dScene(o, doc);
     }

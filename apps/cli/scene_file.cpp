@@ -31,7 +31,6 @@ using json_fields::index;
 using nlohmann::json;
 
 /// More particles than this from one file is a mistake (about 1 GB of state), not a scene.
-constexpr std::int64_t maxParticles = 10'000'000;
 
 /// A rotation: {"axis": [x, y, z], "angle_deg": a} or {"yaw_deg", "pitch_deg", "roll_deg"}
 /// (R = Rz(yaw) Ry(pitch) Rx(roll)).
@@ -141,8 +140,8 @@ private:
   }
 
   ParticleId create(const ParticleDef& def, const std::string& name, const std::string& where) {
-    if (static_cast<std::int64_t>(created_.size()) >= maxParticles) {
-      fail(where, "more than " + std::to_string(maxParticles) + " particles in the scene");
+    if (static_cast<std::int64_t>(created_.size()) >= maxSceneParticles) {
+      fail(where, "more than " + std::to_string(maxSceneParticles) + " particles in the scene");
     }
     const ParticleId id = at(where, [&] { return scene_.world.createParticle(def); });
     created_.push_back(id);
@@ -183,11 +182,11 @@ private:
       }
       std::int64_t counts[3];
       for (std::size_t a = 0; a < 3; ++a) {
-        counts[a] = Fields::integerAt(countsJson[a], index(g.path("counts"), a), 1, maxParticles);
+        counts[a] = Fields::integerAt(countsJson[a], index(g.path("counts"), a), 1, maxSceneParticles);
       }
       g.done();
-      if (counts[0] * counts[1] * counts[2] > maxParticles) {
-        fail(g.path("counts"), "more than " + std::to_string(maxParticles) + " particles");
+      if (counts[0] * counts[1] * counts[2] > maxSceneParticles) {
+        fail(g.path("counts"), "more than " + std::to_string(maxSceneParticles) + " particles");
       }
       for (std::int64_t k = 0; k < counts[2]; ++k) {
         for (std::int64_t jy = 0; jy < counts[1]; ++jy) {
@@ -201,7 +200,7 @@ private:
       Fields l(f.require("line"), f.path("line"));
       const Vec3f from = l.requiredVec3("from");
       const Vec3f to = l.requiredVec3("to");
-      const std::int64_t count = Fields::integerAt(l.require("count"), l.path("count"), 1, maxParticles);
+      const std::int64_t count = Fields::integerAt(l.require("count"), l.path("count"), 1, maxSceneParticles);
       l.done();
       for (std::int64_t k = 0; k < count; ++k) {
         const float t = count == 1 ? 0.0f : static_cast<float>(k) / static_cast<float>(count - 1);
@@ -215,7 +214,7 @@ private:
       if (!(hi.x >= lo.x && hi.y >= lo.y && hi.z >= lo.z)) {
         fail(r.path("max"), "must be >= min in every component");
       }
-      const std::int64_t count = Fields::integerAt(r.require("count"), r.path("count"), 1, maxParticles);
+      const std::int64_t count = Fields::integerAt(r.require("count"), r.path("count"), 1, maxSceneParticles);
       std::mt19937 rng(static_cast<std::uint32_t>(r.integer("seed", 1, 0, 4294967295)));
       r.done();
       const auto uniform = [&](float a, float b) {
@@ -335,8 +334,8 @@ private:
     def.pinEnd = f.boolean("pin_end", def.pinEnd);
     const std::string name = f.text("name", "");
     f.done();
-    if (static_cast<std::int64_t>(created_.size()) + def.segments + 1 > maxParticles) {
-      fail(f.path("segments"), "more than " + std::to_string(maxParticles) + " particles in the scene");
+    if (static_cast<std::int64_t>(created_.size()) + def.segments + 1 > maxSceneParticles) {
+      fail(f.path("segments"), "more than " + std::to_string(maxSceneParticles) + " particles in the scene");
     }
     const Rope made = at(where, [&] { return createRope(scene_.world, def); });
     adopt(made.particles, name, f.path("name"));
@@ -406,8 +405,8 @@ private:
     });
     const std::string name = f.text("name", "");
     f.done();
-    if (static_cast<std::int64_t>(created_.size()) + std::int64_t{def.rows} * def.columns > maxParticles) {
-      fail(f.path("rows"), "more than " + std::to_string(maxParticles) + " particles in the scene");
+    if (static_cast<std::int64_t>(created_.size()) + std::int64_t{def.rows} * def.columns > maxSceneParticles) {
+      fail(f.path("rows"), "more than " + std::to_string(maxSceneParticles) + " particles in the scene");
     }
     const Cloth made = at(where, [&] { return createCloth(scene_.world, def); });
     adopt(made.particles, name, f.path("name"));

@@ -11,6 +11,9 @@
 
 namespace impetus::cli {
 
+/// The most particles a particle scene file may make.
+inline constexpr std::int64_t maxSceneParticles = 10'000'000;
+
 /// A loaded scene: the world, ready to step, and what the file asked for.
 struct ParticleScene {
   std::string description;
