@@ -30,10 +30,11 @@ int main(int argc, char** argv) {
     return 0;
   }
   std::size_t index = 0;
-  if (!options.sample.empty()) {
-    const auto found = findSample(options.sample);
+  {
+    const std::string name = options.sample.empty() ? std::string(showcaseSample) : options.sample;
+    const auto found = findSample(name);
     if (!found) {
-      std::fprintf(stderr, "impetus-samples: unknown sample '%s' (impetus-samples --list)\n", options.sample.c_str());
+      std::fprintf(stderr, "impetus-samples: unknown sample '%s' (impetus-samples --list)\n", name.c_str());
       return 2;
     }
     index = *found;

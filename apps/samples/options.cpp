@@ -1,6 +1,9 @@
 #include "options.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <string>
 #include <string_view>
 
 namespace impetus::samples {
@@ -45,6 +48,12 @@ AppOptions parseOptions(std::span<const char* const> args) {
         throw UsageError("--screenshot: empty path");
       }
       options.screenshot = std::filesystem::path(path);
+      std::string extension = options.screenshot->extension().string();
+      std::transform(extension.begin(), extension.end(), extension.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if (extension != ".png") {
+        throw UsageError("--screenshot = " + std::string(path) + ": must end in .png (screenshots are PNG files)");
+      }
     } else if (arg == "--width") {
       options.width = parseInt(arg, value(), 64, 8192);
     } else if (arg == "--height") {
@@ -70,7 +79,9 @@ AppOptions parseOptions(std::span<const char* const> args) {
 std::string usage() {
   return "impetus-samples: the samples of Impetus (SDL2, OpenGL 3.3, Dear ImGui)\n"
          "\n"
-         "  impetus-samples [--sample \"Category/Name\"]      open the app (on that sample)\n"
+         "  impetus-samples [--sample \"Category/Name\"]      open the app (on that sample; default: the showcase, " +
+         std::string(showcaseSample) +
+         ")\n"
          "  impetus-samples --list                           list the samples\n"
          "  impetus-samples --sample S --frames N --screenshot out.png [--width W] [--height H] [--hide-ui]\n"
          "                                                   render N frames without a display, save the last\n"

@@ -17,8 +17,12 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace impetus::samples {
+
+/// The sample the app opens without --sample (and ./run demo shows): what the engine does best.
+inline constexpr std::string_view showcaseSample = "Engine/Ragdolls";
 
 struct AppOptions {
   std::string sample;                              ///< "Category/Name"; empty: the first one

@@ -181,6 +181,17 @@ TEST(SamplesApp, RefusesAnUnwritableScreenshotPath) {
                    "does not exist");
 }
 
+TEST(SamplesApp, RefusesAScreenshotThatIsNotAPng) {
+  expectUsageError(impetus({"--sample", "Engine/Pyramid", "--frames", "1", "--screenshot", "x.txt"}),
+                   "--screenshot = x.txt: must end in .png");
+}
+
+TEST(SamplesApp, OpensTheShowcaseWithoutASample) {
+  const CliRun run = impetus({"--frames", "2", "--no-render"});
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("Engine/Ragdolls: 2 frames"), std::string::npos) << run.out;
+}
+
 TEST(SamplesApp, RefusesAHeadlessRunWithoutFramesAndUnknownOptions) {
   expectUsageError(impetus({"--sample", "Engine/Pyramid", "--screenshot", "x.png"}), "needs --frames");
   expectUsageError(impetus({"--frobnicate"}), "unknown option '--frobnicate'");
