@@ -60,7 +60,7 @@ void Loader::load(const json& doc) {
   }
   gravity_ = def.gravity;
   def.taskRunner = runner_;
-  scene_.world = World(def);
+  scene_.world = at("world", [&] { return World(def); });
   if (const json* m = top.find("materials")) {
     materials(*m);
   }

@@ -260,7 +260,7 @@ TEST(CliValidation, rigid2d_world_materials_and_bodies) {
            "bodies[0].position.x = 1e+30: must be within 1e6 m of the world origin"},
           {body2d(R"("linear_velocity": [1e30, 0])"),
            "bodies[0].linear_velocity = 1e+30 m/s: must be at most the world's maxLinearSpeed, 400 m/s"},
-          {world2d(R"("gravity": [0, -1e38])"), "gravity = 1e+38 m/s^2: must be at most 1e4 m/s^2"},
+          {world2d(R"("gravity": [0, -1e38])"), "world.gravity = 1e+38 m/s^2: must be at most 1e4 m/s^2"},
           {body2d(R"("angular_velocity": -1e39)"), "bodies[0].angular_velocity = -1e+39"},
           {body2d(R"("linear_damping": -1)"), "bodies[0].linear_damping = -1"},
           {body2d(R"("angular_damping": -1)"), "bodies[0].angular_damping = -1"},
