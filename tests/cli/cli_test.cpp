@@ -358,10 +358,11 @@ TEST(Cli, outputs_a_script_reads_are_always_there_and_typed) {
   // Every output of gps-clock is a number, the MHz one included.
   const CliRun clock = impetus({"calc", "gps-clock", "--json"});
   ASSERT_EQ(clock.status, 0) << clock.err;
-  for (const auto& [name, value] : json::parse(clock.out).at("outputs").items()) {
+  const json clockDoc = json::parse(clock.out); // kept: items() refers into it
+  for (const auto& [name, value] : clockDoc.at("outputs").items()) {
     EXPECT_TRUE(value.at("value").is_number()) << name;
   }
-  EXPECT_NEAR(output(json::parse(clock.out), "corrected_frequency_mhz"), 10.22999999543, 2e-11);
+  EXPECT_NEAR(output(clockDoc, "corrected_frequency_mhz"), 10.22999999543, 2e-11);
   // oscillator-stability's keys spell each method as --method does.
   const CliRun osc = impetus({"calc", "oscillator-stability", "--omega-dt", "2.5", "--json"});
   ASSERT_EQ(osc.status, 0) << osc.err;
