@@ -107,9 +107,9 @@ bool finite(const Vec2f& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 /// what it drives goes with it (a body on a paddle's slider pressed into a wall, or squeezed
 /// between the paddle and a wall: no solver can hold both an infinitely heavy driver and a wall).
 /// A much heavier dynamic body does the same in degree: the wall's push reaches it only through
-/// the light body it presses, a mass ratio's worth of iterations later (a 1.3 kg plank between a
-/// wall and a 93 kg block at 80 m/s goes into the wall), which one solve and one relax pass a
-/// substep cannot give. Such a body can reach anywhere its driver pushes it, so the arena bound
+/// the light body it presses, a mass ratio's worth of iterations later, which one solve and one
+/// relax pass a substep cannot give: a light plank pressed by a block seventy times heavier goes
+/// into the wall. Such a body can reach anywhere its driver pushes it, so the arena bound
 /// does not hold it; nor once freed, if it was left in a wall (it is pushed out of the nearer
 /// face). docs/reliability.md ("Soak") lists the episodes that showed it.
 bool drivenIntoWall(const Episode& e, BodyId b) {
