@@ -434,7 +434,8 @@ inline void requireWorldPosition(const Vec2f& p) {
   requireFinite(p, "position");
   for (const auto& [field, value] : {std::pair{"position.x", p.x}, std::pair{"position.y", p.y}}) {
     if (std::abs(value) > maxWorldCoordinate) {
-      throw Error(field, std::string(field) + " = " + formatFloat(value) + ": must be within 1e6 m of the world origin");
+      throw Error(field,
+                  std::string(field) + " = " + formatFloat(value) + ": must be within 1e6 m of the world origin");
     }
   }
 }

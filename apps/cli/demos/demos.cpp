@@ -40,8 +40,6 @@ const std::vector<Demo>& demos() {
   return all;
 }
 
-int runDemos(const std::string& name, bool list, const DemoOptions& options);
-
 } // namespace
 
 void writeCsv(const DemoOptions& options, const std::string& fileName, const std::string& header,
@@ -69,15 +67,6 @@ void makeOutputDirectory(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir, ec);
   if (ec) {
     throw Error("--out", fmt::format("--out = {}: cannot make the directory ({})", dir.string(), ec.message()));
-  }
-}
-
-int runDemo(const std::string& name, bool list, const DemoOptions& options) {
-  try {
-    return runDemos(name, list, options);
-  } catch (const Error& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return 2;
   }
 }
 
@@ -115,5 +104,14 @@ int runDemos(const std::string& name, bool list, const DemoOptions& options) {
 }
 
 } // namespace
+
+int runDemo(const std::string& name, bool list, const DemoOptions& options) {
+  try {
+    return runDemos(name, list, options);
+  } catch (const Error& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 2;
+  }
+}
 
 } // namespace impetus::cli
