@@ -22,7 +22,7 @@ mkdir -p "$out"
 # Frames per sample where 4 s is not the telling moment.
 declare -A FRAMES=(
   ["Book/Hovercraft"]=1500   # 25 s: the slalom's first turn and its sideslip
-  ["Book/Bumper cars"]=420   # 7 s: just after the crash
+  ["Book/Bumper cars"]=60    # 1 s: just after the crash (0.65 s)
   ["Book/Cannon"]=420        # 7 s: the shell on its way down to the target
   ["Book/Cannon2"]=420
   ["Book/Explosion"]=150

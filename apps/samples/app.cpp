@@ -6,6 +6,7 @@
 #include "gl_renderer.hpp"
 #include "sample.hpp"
 #include "screenshot.hpp"
+#include "ui.hpp"
 
 #include <SDL.h>
 #define GL_GLEXT_PROTOTYPES 1
@@ -64,13 +65,25 @@ float gridSpacing(float pixelSize, float minPixels) {
   return 10.0f * decade;
 }
 
+/// Puts the next button on this line if a button labelled `label` fits there, else on the next.
+void sameLineIfFits(const char* label) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float buttonWidth = ImGui::CalcTextSize(label).x + 2.0f * style.FramePadding.x;
+  const float lineEnd = ImGui::GetItemRectMax().x + style.ItemSpacing.x + buttonWidth;
+  if (lineEnd <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
+    ImGui::SameLine();
+  }
+}
+
 class App {
 public:
   App(const AppOptions& options, std::size_t sampleIndex) : options_(options) {
     if (!options.noRender) {
       display_ = std::make_unique<Display>("Impetus samples", options.width, options.height, options.headless());
       renderer_ = std::make_unique<GlRenderer>();
+      loadFont(display_->uiScale());
     } else {
+      loadFont(1.0f);
       // No backends: ImGui still lays the panels out (exercising every sample's ui()), it just
       // never draws them. Its font atlas must be built for that.
       ImGuiIO& io = ImGui::GetIO();
@@ -98,6 +111,7 @@ private:
   void simulate(float dt);
   void samplesPanel();
   void samplePanel();
+  void measureOverflow();
   void drawScene();
   void render();
   void screenshot(const std::filesystem::path& path);
@@ -124,6 +138,9 @@ private:
   std::string problem_; // interactive: why the sample stopped (exception, NaN)
   bool panning_ = false;
   int screenshotCount_ = 0;
+  int frame_ = 0;
+  float panelOverflow_ = 0.0f; // px: how far the widest panel line ran past its panel's edge
+  std::string overflowingPanel_;
   std::optional<std::size_t> pendingSelect_;
   bool pendingReset_ = false;
 };
@@ -261,8 +278,17 @@ void App::layout() {
   if (options_.hideUi) {
     leftWidth_ = rightWidth_ = 0.0f;
   } else {
-    leftWidth_ = std::clamp(0.2f * w, 120.0f, 240.0f);
-    rightWidth_ = std::clamp(0.36f * w, 120.0f, 380.0f);
+    // The panels grow with the font up to a share of the window; the scene keeps the rest.
+    // The samples list is as wide as its longest name needs, up to 30% of the window.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float widest = ImGui::CalcTextSize("pause (P)  step (O)").x;
+    for (const SampleInfo& info : sampleRegistry()) {
+      widest = std::max(widest, ImGui::CalcTextSize(info.name.c_str()).x);
+    }
+    const float needed = widest + 2.0f * style.WindowPadding.x + style.ScrollbarSize + style.ItemSpacing.x;
+    leftWidth_ = std::clamp(needed, 120.0f, 0.3f * w);
+    const float em = ImGui::GetFontSize() / panelFontPixels;
+    rightWidth_ = std::clamp(0.36f * w, 120.0f, 400.0f * em);
   }
   const float left = leftCollapsed_ ? 0.0f : leftWidth_;
   camera_.setViewport(static_cast<int>(left), 0, static_cast<int>(w - left - rightWidth_), static_cast<int>(h));
@@ -304,28 +330,30 @@ void App::samplesPanel() {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(leftWidth_, size.y), ImGuiCond_Always);
-  if (options_.headless()) {
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_Once); // pictures show the scene and its panel
-  }
+  // Below the smallest window the panels are laid out for (800 x 450), the list starts collapsed
+  // so that the scene and the sample's panel keep the room.
+  constexpr float smallestLaidOutWidth = 800.0f; // px
+  ImGui::SetNextWindowCollapsed(size.x < smallestLaidOutWidth, ImGuiCond_Once);
   const bool open = ImGui::Begin("Samples", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
   leftCollapsed_ = ImGui::IsWindowCollapsed();
   if (open) {
     ImGui::Checkbox("pause (P)", &paused_);
-    ImGui::SameLine();
+    sameLineIfFits("step (O)");
     if (ImGui::Button("step (O)")) {
       paused_ = true;
       singleStep_ = true;
     }
+    sameLineIfFits("reset (R)");
     if (ImGui::Button("reset (R)")) {
       reset();
     }
-    ImGui::SameLine();
+    sameLineIfFits("view");
     if (ImGui::Button("view")) {
       fitView_ = true;
     }
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::SliderFloat("##timescale", &timeScale_, 0.05f, 4.0f, "time scale %.2fx", ImGuiSliderFlags_Logarithmic);
-    ImGui::Text("t = %.2f s, %ld steps of %.1f ms", simulatedTime_, steps_,
+    textWrapped("t = %.2f s, %ld steps of %.1f ms", simulatedTime_, steps_,
                 static_cast<double>(sample_->timeStep() * 1000.0f));
     ImGui::Separator();
     const auto& registry = sampleRegistry();
@@ -333,12 +361,9 @@ void App::samplesPanel() {
     bool categoryOpen = false;
     for (std::size_t i = 0; i < registry.size(); ++i) {
       if (registry[i].category != category) {
-        if (categoryOpen) {
-          ImGui::TreePop();
-        }
         category = registry[i].category;
         ImGui::SetNextItemOpen(true, ImGuiCond_Once);
-        categoryOpen = ImGui::TreeNode(category.c_str());
+        categoryOpen = ImGui::CollapsingHeader(category.c_str()); // no indent: the names keep the width
       }
       if (categoryOpen && ImGui::Selectable(registry[i].name.c_str(), i == index_)) {
         if (i != index_) {
@@ -349,9 +374,7 @@ void App::samplesPanel() {
         ImGui::SetTooltip("%s", registry[i].description.c_str());
       }
     }
-    if (categoryOpen) {
-      ImGui::TreePop();
-    }
+    measureOverflow();
   }
   ImGui::End();
 }
@@ -381,8 +404,22 @@ void App::samplePanel() {
       throw SampleFailure(std::string("its panel threw: ") + e.what());
     }
     ImGui::PopItemWidth();
+    measureOverflow();
   }
   ImGui::End();
+}
+
+void App::measureOverflow() {
+  constexpr int settleFrames = 2; // ImGui sizes a window's scroll bar from the frame before
+  if (frame_ < settleFrames) {
+    return;
+  }
+  const ImGuiWindow* window = ImGui::GetCurrentWindow();
+  const float overflow = window->DC.CursorMaxPos.x - window->WorkRect.Max.x;
+  if (overflow > panelOverflow_) {
+    panelOverflow_ = overflow;
+    overflowingPanel_ = window->Name;
+  }
 }
 
 void App::drawScene() {
@@ -439,8 +476,7 @@ void App::screenshot(const std::filesystem::path& path) {
 int App::run() {
   using clock = std::chrono::steady_clock;
   auto last = clock::now();
-  int frame = 0;
-  while (!quit_ && (!options_.frames || frame < *options_.frames)) {
+  while (!quit_ && (!options_.frames || frame_ < *options_.frames)) {
     float dt = frameTime;
     if (!options_.headless()) {
       const auto now = clock::now();
@@ -470,7 +506,7 @@ int App::run() {
       }
       drawScene();
     } catch (const SampleFailure& e) {
-      const std::string message = "sample '" + name() + "' " + e.what() + " (frame " + std::to_string(frame + 1) + ")";
+      const std::string message = "sample '" + name() + "' " + e.what() + " (frame " + std::to_string(frame_ + 1) + ")";
       ImGui::ErrorCheckEndFrameRecover(nullptr);
       ImGui::EndFrame();
       std::fprintf(stderr, "impetus-samples: %s\n", message.c_str());
@@ -482,8 +518,8 @@ int App::run() {
       continue;
     }
     render();
-    ++frame;
-    if (options_.screenshot && options_.frames && frame == *options_.frames) {
+    ++frame_;
+    if (options_.screenshot && options_.frames && frame_ == *options_.frames) {
       screenshot(*options_.screenshot);
     }
     if (display_) {
@@ -491,8 +527,15 @@ int App::run() {
     }
   }
   if (options_.headless()) {
-    std::printf("impetus-samples: %s: %d frames, %ld steps, %.3f s simulated, state finite\n", name().c_str(), frame,
+    std::printf("impetus-samples: %s: %d frames, %ld steps, %.3f s simulated, state finite\n", name().c_str(), frame_,
                 steps_, simulatedTime_);
+    constexpr float overflowTolerance = 1.0f; // px: rounding of item widths
+    if (panelOverflow_ > overflowTolerance) {
+      std::printf("impetus-samples: %s: panel text runs %.0f px past the edge of the panel %s\n", name().c_str(),
+                  static_cast<double>(panelOverflow_), overflowingPanel_.c_str());
+    } else {
+      std::printf("impetus-samples: %s: panels fit\n", name().c_str());
+    }
     if (const std::string summary = sample_->summary(); !summary.empty()) {
       std::printf("impetus-samples: %s: %s\n", name().c_str(), summary.c_str());
     }

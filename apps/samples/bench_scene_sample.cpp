@@ -1,4 +1,5 @@
 #include "bench_scene_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -47,10 +48,10 @@ CameraView BenchSceneSample::fitView() const {
 }
 
 void BenchSceneSample::sceneControls() {
-  if (ImGui::Checkbox("sleeping", &sleep_)) {
+  if (checkbox("sleeping", &sleep_)) {
     setup();
   }
-  ImGui::Text("%zu bodies (%zu dynamic), %zu joints", scene_.bodies.size(), bench::dynamicBodyCount(scene_),
+  textWrapped("%zu bodies (%zu dynamic), %zu joints", scene_.bodies.size(), bench::dynamicBodyCount(scene_),
               scene_.joints.size());
 }
 

@@ -5,6 +5,7 @@
 #include <backends/imgui_impl_sdl.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -45,7 +46,7 @@ std::string open(const std::string& title, int width, int height, bool hidden, S
 
 } // namespace
 
-Display::Display(const std::string& title, int width, int height, bool headless) {
+Display::Display(const std::string& title, int width, int height, bool headless) : headless_(headless) {
   const bool userDriver = std::getenv("SDL_VIDEODRIVER") != nullptr;
   std::string error;
   if (headless && !userDriver) {
@@ -134,6 +135,19 @@ std::array<int, 2> Display::drawableSize() const {
   std::array<int, 2> size{};
   SDL_GL_GetDrawableSize(window_, &size[0], &size[1]);
   return size;
+}
+
+float Display::uiScale() const {
+  constexpr float referenceDpi = 96.0f; // the dpi at which ImGui's sizes are one pixel per unit
+  constexpr float maxScale = 4.0f;      // beyond any real screen: a display reporting nonsense
+  float diagonal = 0.0f;
+  float horizontal = 0.0f;
+  float vertical = 0.0f;
+  if (headless_ || SDL_GetDisplayDPI(SDL_GetWindowDisplayIndex(window_), &diagonal, &horizontal, &vertical) != 0 ||
+      !(horizontal > 0.0f)) {
+    return 1.0f;
+  }
+  return std::clamp(horizontal / referenceDpi, 1.0f, maxScale);
 }
 
 std::string Display::driver() const {

@@ -32,6 +32,10 @@ public:
   /// Window size in screen units (what mouse events and ImGui use) and in framebuffer pixels.
   [[nodiscard]] std::array<int, 2> windowSize() const;
   [[nodiscard]] std::array<int, 2> drawableSize() const;
+  /// How much larger than a 96-dpi screen the window's display draws a point: the display's
+  /// horizontal dpi over 96, at least 1 (1 when SDL cannot tell, and always 1 headless so
+  /// pictures do not depend on the machine).
+  [[nodiscard]] float uiScale() const;
   /// The SDL video driver in use ("offscreen", "x11", "wayland").
   [[nodiscard]] std::string driver() const;
 
@@ -43,6 +47,7 @@ private:
   bool sdlInitialised_ = false;
   bool imguiSdl_ = false;
   bool imguiGl_ = false;
+  bool headless_ = false;
 };
 
 } // namespace impetus::samples

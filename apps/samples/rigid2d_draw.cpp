@@ -1,5 +1,7 @@
 #include "rigid2d_draw.hpp"
 
+#include "ui.hpp"
+
 #include <imgui.h>
 
 #include <array>
@@ -190,8 +192,7 @@ void drawOptionsUi(Rigid2dDrawOptions& options) {
   ImGui::SameLine();
   ImGui::Checkbox("friction", &options.frictionForces);
   if (options.contactForces || options.frictionForces) {
-    ImGui::SliderFloat("##forceScale", &options.forceScale, 1.0f, 1.0e5f, "force scale %.0f N per m",
-                       ImGuiSliderFlags_Logarithmic);
+    slider("force scale", &options.forceScale, 1.0f, 1.0e5f, "%.0f N per m", ImGuiSliderFlags_Logarithmic);
   }
 }
 

@@ -1,4 +1,5 @@
 #include "rigid2d_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -42,7 +43,7 @@ void Rigid2dSample::ui() {
   parameters();
   if (ImGui::CollapsingHeader("Debug draw")) {
     drawOptionsUi(drawOptions_);
-    ImGui::Text("%zu bodies (%zu awake), %zu joints, %zu contacts", world_.bodyCount(), world_.awakeBodyCount(),
+    textWrapped("%zu bodies (%zu awake), %zu joints, %zu contacts", world_.bodyCount(), world_.awakeBodyCount(),
                 world_.jointCount(), world_.contactCount());
   }
 }

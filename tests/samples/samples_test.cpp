@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -108,9 +109,18 @@ class SampleRuns : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SampleRuns, Runs120FramesFiniteAndItsScreenshotIsNotBlank) {
   const std::string& sample = GetParam();
-  const CliRun simulated = runApp({"--sample", sample, "--frames", "120", "--no-render"});
+  // At the smallest window the panels are laid out for (800 x 450): no panel text runs past a
+  // panel's edge (the app measures every line it lays out, wrapped or not).
+  const CliRun simulated =
+      runApp({"--sample", sample, "--frames", "120", "--no-render", "--width", "800", "--height", "450"});
   ASSERT_EQ(simulated.status, 0) << simulated.out << simulated.err;
   EXPECT_NE(simulated.out.find("state finite"), std::string::npos) << simulated.out;
+  EXPECT_NE(simulated.out.find("panels fit"), std::string::npos) << simulated.out;
+  // ... and at a 1920 x 1080 screen, where the panels are wider.
+  const CliRun wide =
+      runApp({"--sample", sample, "--frames", "30", "--no-render", "--width", "1920", "--height", "1080"});
+  ASSERT_EQ(wide.status, 0) << wide.out << wide.err;
+  EXPECT_NE(wide.out.find("panels fit"), std::string::npos) << wide.out;
 
   // The scene alone (--hide-ui), so the colour count measures what the sample drew.
   const std::string png = screenshotPath(sample);
@@ -151,6 +161,36 @@ TEST(SamplesReference, IntegratorsMatchTheCommittedPicture) {
   ASSERT_TRUE(image.has_value()) << png;
   // A pixel differs when a channel is off by more than 24 of 255; at most 1 % of them may.
   EXPECT_LE(differingFraction(*image, *reference, 24), 0.01) << png << " differs from " << referencePath;
+}
+
+/// The number after `key` in a headless run's summary (NaN when it is not there).
+double numberAfter(const std::string& out, const std::string& key) {
+  const std::size_t at = out.find(key);
+  return at == std::string::npos ? std::nan("") : std::strtod(out.c_str() + at + key.size(), nullptr);
+}
+
+/// What each sample is about happens within its first two seconds (120 frames), in view.
+TEST(SamplesFraming, EachFeatureHappensInTheFirstTwoSeconds) {
+  const auto run = [](const char* sample) {
+    const CliRun r = runApp({"--sample", sample, "--frames", "120", "--no-render"});
+    EXPECT_EQ(r.status, 0) << r.out << r.err;
+    return r.out;
+  };
+  // Bumper cars: the craft collide (in both worlds) before 2 s.
+  const std::string cars = run("Book/Bumper cars");
+  EXPECT_LT(numberAfter(cars, "book's impulse: hit at "), 2.0) << cars;
+  EXPECT_LT(numberAfter(cars, "soft step: hit at "), 2.0) << cars;
+  // Ray casts: the ray hits a shape at the screenshot's frame.
+  const std::string rays = run("Engine/Ray casts");
+  EXPECT_NE(rays.find("the ray hits at"), std::string::npos) << rays;
+  // Smash: the projectile is still inside the initial view (x from -16.5 to 22.5 m).
+  const std::string smash = run("Engine/Smash");
+  const double x = numberAfter(smash, "the projectile is at x = ");
+  EXPECT_GT(x, -16.5) << smash;
+  EXPECT_LT(x, 22.5) << smash;
+  // Cloth: the flag moves by more than a cell (0.35 m) in its first two seconds.
+  const std::string cloth = run("Book/Cloth");
+  EXPECT_GT(numberAfter(cloth, "largest travel of a particle from its start "), 0.35) << cloth;
 }
 
 TEST(SamplesApp, ListsEverySampleOnceAsCategorySlashName) {

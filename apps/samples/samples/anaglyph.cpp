@@ -8,6 +8,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/display/anaglyph.hpp>
 #include <impetus/display/stereo.hpp>
@@ -119,14 +120,15 @@ public:
   void ui() override {
     static const char* names[] = {"true", "gray", "color", "half-color", "optimized", "dubois"};
     int m = static_cast<int>(mode_);
-    if (ImGui::Combo("method", &m, names, 6)) {
+    labelColumn("method");
+    if (ImGui::Combo("##method", &m, names, 6)) {
       mode_ = static_cast<AnaglyphMode>(m);
       render();
     }
-    ImGui::SliderFloat("##e", &interaxial_, 0.0f, 1.0f, "interaxial e %.2f m");
-    ImGui::SliderFloat("##C", &convergence_, 3.0f, 15.0f, "convergence C %.1f m");
-    ImGui::TextWrapped("The front ball orbits from %.1f to %.1f m: in front of the screen when nearer than C.",
-                       6.0 - 3.0, 6.0 + 3.0);
+    slider("interaxial e", &interaxial_, 0.0f, 1.0f, "%.2f m");
+    slider("convergence C", &convergence_, 3.0f, 15.0f, "%.1f m");
+    textWrapped("The front ball orbits from %.1f to %.1f m: in front of the screen when nearer than C.", 6.0 - 3.0,
+                6.0 + 3.0);
     parallax_.plot("orbiting ball's parallax on the image (px)", "%.2f px");
   }
 

@@ -3,12 +3,14 @@
 // one impulse per touching pair: j = -(1 + e) v_rel.n / (1/m1 + 1/m2 + rotational terms)), on the
 // right the engine's soft-step solver. The impulse is the same physics, so both conserve momentum
 // and lose the same share of kinetic energy; the plots show each world's total momentum (kg m/s)
-// and kinetic energy (J) through the crash. The setup is `impetus demo bumper-cars`'s; the arrow
-// keys drive the player's craft in both worlds at once; the crash repeats every 20 s.
+// and kinetic energy (J) through the crash. The setup is `impetus demo bumper-cars`'s with the
+// craft starting closer, so that they meet within two seconds; the arrow keys drive the player's
+// craft in both worlds at once; the crash repeats every 20 s.
 #include "sample.hpp"
 
 #include "plot.hpp"
 #include "rigid2d_draw.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/vehicles/hovercraft.hpp>
@@ -34,8 +36,8 @@ constexpr float repeatTime = 20.0f;  // s
 /// One world with its two craft. Built in place and never moved: the craft refer to the world.
 struct Arena {
   explicit Arena(SolverKind solver) : world(worldDef(solver)) {
-    player.emplace(world, vehicles::HovercraftParams{}, Vec2f{-40.0f, 4.0f}, 0.0f, 10.0f);
-    other.emplace(world, vehicles::HovercraftParams{}, Vec2f{0.0f, 30.0f}, -0.5f * pi<float>, 5.0f);
+    player.emplace(world, vehicles::HovercraftParams{}, Vec2f{-20.0f, 4.0f}, 0.0f, 10.0f);
+    other.emplace(world, vehicles::HovercraftParams{}, Vec2f{0.0f, 14.0f}, -0.5f * pi<float>, 5.0f);
     world.setLinearVelocity(player->body(), {8.0f, 0.0f});
     world.setLinearVelocity(other->body(), {0.0f, -2.0f});
   }
@@ -117,6 +119,10 @@ public:
   }
 
   [[nodiscard]] CameraView initialView() const override { return {{0.5f * separation - 10.0f, 5.0f}, 40.0f, 115.0f}; }
+  [[nodiscard]] std::string summary() const override {
+    return "book's impulse: " + (arenas_[0]->report.empty() ? std::string("no hit yet") : arenas_[0]->report) +
+           "; soft step: " + (arenas_[1]->report.empty() ? std::string("no hit yet") : arenas_[1]->report);
+  }
   [[nodiscard]] std::string_view controls() const override {
     return "Arrow keys drive the player's craft (left in each world) in both worlds at once.";
   }
@@ -146,12 +152,12 @@ public:
 
   void ui() override {
     static constexpr std::array<const char*, 2> names{"book's impulse", "soft step"};
-    ImGui::TextWrapped("t = %.2f s (repeats every %.0f s)", static_cast<double>(time_),
-                       static_cast<double>(repeatTime));
+    textWrapped("t = %.2f s (repeats every %.0f s)", static_cast<double>(time_), static_cast<double>(repeatTime));
     for (std::size_t i = 0; i < arenas_.size(); ++i) {
       Arena& a = *arenas_[i];
-      ImGui::TextColored(ImVec4(0.9f, 0.9f, 0.6f, 1.0f), "%s: %s", names[i],
-                         a.report.empty() ? "no hit yet" : a.report.c_str());
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.9f, 0.9f, 0.6f, 1.0f));
+      textWrapped("%s: %s", names[i], a.report.empty() ? "no hit yet" : a.report.c_str());
+      ImGui::PopStyleColor();
       const std::string m = std::string(names[i]) + ": total momentum (kg m/s)";
       const std::string e = std::string(names[i]) + ": kinetic energy (J)";
       a.momentumHistory.plot(m.c_str(), "%.1f kg m/s", 45.0f);

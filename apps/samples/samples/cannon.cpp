@@ -13,6 +13,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/mechanics/aiming.hpp>
@@ -104,17 +105,17 @@ public:
     float gamma = static_cast<float>(radToDeg(gun_.azimuth));
     float barrel = static_cast<float>(gun_.barrelLength);
     float base = static_cast<float>(gun_.baseHeight);
-    changed |= ImGui::SliderFloat("##vm", &speed, 10.0f, 150.0f, "muzzle speed Vm %.1f m/s");
-    changed |= ImGui::SliderFloat("##alpha", &alpha, 0.0f, 90.0f, "alpha (from vertical) %.1f deg");
-    changed |= ImGui::SliderFloat("##gamma", &gamma, -45.0f, 45.0f, "gamma (toward +z) %.1f deg");
-    changed |= ImGui::SliderFloat("##L", &barrel, 0.0f, 20.0f, "barrel length L %.1f m");
-    changed |= ImGui::SliderFloat("##Yb", &base, 0.0f, 30.0f, "base height Yb %.1f m");
+    changed |= slider("muzzle speed Vm", &speed, 10.0f, 150.0f, "%.1f m/s");
+    changed |= slider("alpha (from vertical)", &alpha, 0.0f, 90.0f, "%.1f deg");
+    changed |= slider("gamma (toward +z)", &gamma, -45.0f, 45.0f, "%.1f deg");
+    changed |= slider("barrel length L", &barrel, 0.0f, 20.0f, "%.1f m");
+    changed |= slider("base height Yb", &base, 0.0f, 30.0f, "%.1f m");
     float tx = static_cast<float>(target_.center.x);
     float ty = static_cast<float>(target_.center.y);
     float tz = static_cast<float>(target_.center.z);
-    changed |= ImGui::SliderFloat("##tx", &tx, 20.0f, 580.0f, "target x %.0f m");
-    changed |= ImGui::SliderFloat("##ty", &ty, 0.0f, 100.0f, "target y %.0f m");
-    changed |= ImGui::SliderFloat("##tz", &tz, -60.0f, 80.0f, "target z %.0f m");
+    changed |= slider("target x", &tx, 20.0f, 580.0f, "%.0f m");
+    changed |= slider("target y", &ty, 0.0f, 100.0f, "%.0f m");
+    changed |= slider("target z", &tz, -60.0f, 80.0f, "%.0f m");
     if (changed) {
       gun_ = {speed, degToRad(static_cast<double>(alpha)), degToRad(static_cast<double>(gamma)), barrel, base};
       target_.center = {tx, ty, tz};
@@ -134,9 +135,9 @@ public:
       }
     }
     ImGui::SameLine();
-    ImGui::Checkbox("auto", &autoFire_);
-    ImGui::TextWrapped("%s at t = %.2f s: (%.1f, %.1f, %.1f) m", result_.outcome == ShotOutcome::hit ? "hit" : "ground",
-                       result_.time, result_.position.x, result_.position.y, result_.position.z);
+    checkbox("auto", &autoFire_);
+    textWrapped("%s at t = %.2f s: (%.1f, %.1f, %.1f) m", result_.outcome == ShotOutcome::hit ? "hit" : "ground",
+                result_.time, result_.position.x, result_.position.y, result_.position.z);
     height_.plot("shell height y (m)", "%.1f m");
     updateRangeCurve();
     char overlay[96];
@@ -144,7 +145,7 @@ public:
     plotCurve("range to the ground vs alpha, 0-90 deg (m)", rangeCurve_, overlay, 70.0f, 0.0f,
               static_cast<float>(maxRange_ * 1.1));
     std::snprintf(overlay, sizeof overlay, "largest |difference| %.2g mm", maxDifference_);
-    plotCurve("library minus closed form (mm)", differenceCurve_, overlay, 50.0f);
+    plotCurve("library minus closed form (mm)", differenceCurve_, overlay, 50.0f, 0.0f, 0.0f, 1.0f);
   }
 
 private:

@@ -11,6 +11,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/mechanics/cannon.hpp>
@@ -80,25 +81,24 @@ public:
 
   void ui() override {
     bool changed = false;
-    changed |= ImGui::SliderFloat("##m", &mass_, 1.0f, 50.0f, "shell mass m %.1f kg");
-    changed |= ImGui::SliderFloat("##C", &drag_, 0.0f, 5.0f, "drag C %.2f kg/s");
-    changed |= ImGui::SliderFloat("##vw", &windSpeed_, 0.0f, 40.0f, "wind speed vw %.1f m/s");
-    changed |= ImGui::SliderFloat("##gw", &windFrom_, -180.0f, 180.0f, "wind from gw %.0f deg");
-    changed |= ImGui::Checkbox("the book's wind force -Cw vw (not moving air)", &bookWind_);
+    changed |= slider("shell mass m", &mass_, 1.0f, 50.0f, "%.1f kg");
+    changed |= slider("drag C", &drag_, 0.0f, 5.0f, "%.2f kg/s");
+    changed |= slider("wind speed vw", &windSpeed_, 0.0f, 40.0f, "%.1f m/s");
+    changed |= slider("wind from gw", &windFrom_, -180.0f, 180.0f, "%.0f deg");
+    changed |= checkbox("the book's wind force -Cw vw (not moving air)", &bookWind_);
     if (bookWind_) {
-      changed |= ImGui::SliderFloat("##Cw", &windCoefficient_, 0.0f, 5.0f, "Cw %.2f kg/s");
+      changed |= slider("Cw", &windCoefficient_, 0.0f, 5.0f, "%.2f kg/s");
     }
-    changed |= ImGui::SliderFloat("##alpha", &alpha_, 5.0f, 85.0f, "alpha (from vertical) %.1f deg");
+    changed |= slider("alpha (from vertical)", &alpha_, 5.0f, 85.0f, "%.1f deg");
     if (changed) {
       fire();
     }
     const Vec3d terminal = flight_->terminalVelocity();
-    ImGui::TextWrapped("%s at t = %.2f s, x = %.1f m (vacuum %.1f m)",
-                       shot_.outcome == ShotOutcome::hit ? "hit" : "ground", shot_.time, shot_.position.x,
-                       vacuumShot_.position.x);
+    textWrapped("%s at t = %.2f s, x = %.1f m (vacuum %.1f m)", shot_.outcome == ShotOutcome::hit ? "hit" : "ground",
+                shot_.time, shot_.position.x, vacuumShot_.position.x);
     if (drag_ > 0.0f) {
-      ImGui::TextWrapped("terminal vx = F/C = %.2f m/s; relaxes in m/C = %.1f s", terminal.x,
-                         static_cast<double>(mass_ / drag_));
+      textWrapped("terminal vx = F/C = %.2f m/s; relaxes in m/C = %.1f s", terminal.x,
+                  static_cast<double>(mass_ / drag_));
     }
     vx_.plot("horizontal velocity vx (m/s)", "%.2f m/s");
     speed_.plot("speed |v| (m/s)", "%.2f m/s");

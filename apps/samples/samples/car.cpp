@@ -5,6 +5,7 @@
 // with a torque limit: the engine). The plots show the speed (km/h), the rear suspension's
 // compression (m) and the rear motor's torque (N m per metre of depth).
 #include "rigid2d_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -108,12 +109,12 @@ protected:
   }
 
   void parameters() override {
-    ImGui::Checkbox("autopilot (drive on without keys)", &autopilot_);
-    ImGui::SliderFloat("##wheelspeed", &wheelSpeed_, 1.0f, 60.0f, "wheel speed %.0f rad/s");
-    ImGui::SliderFloat("##torque", &torque_, 0.0f, 100.0f, "motor torque limit %.0f N m");
-    ImGui::SliderFloat("##hertz", &hertz_, 0.5f, 10.0f, "suspension %.1f Hz");
+    checkbox("autopilot (drive on without keys)", &autopilot_);
+    slider("wheel speed", &wheelSpeed_, 1.0f, 60.0f, "%.0f rad/s");
+    slider("motor torque limit", &torque_, 0.0f, 100.0f, "%.0f N m");
+    slider("suspension", &hertz_, 0.5f, 10.0f, "%.1f Hz");
     bool rebuild = ImGui::IsItemDeactivatedAfterEdit();
-    ImGui::SliderFloat("##damping", &dampingRatio_, 0.0f, 2.0f, "damping ratio %.2f");
+    slider("damping ratio", &dampingRatio_, 0.0f, 2.0f, "%.2f");
     rebuild |= ImGui::IsItemDeactivatedAfterEdit();
     if (rebuild) {
       setup();

@@ -4,6 +4,7 @@
 // largest joint reaction force (N per metre of depth), which grows as the sag shrinks (a tauter
 // chain needs more tension to hold the same weight). Joint friction damps the swinging.
 #include "rigid2d_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -93,13 +94,13 @@ protected:
   }
 
   void parameters() override {
-    ImGui::SliderInt("##planks", &planks_, 4, 60, "planks of 1 m: %d");
+    slider("planks of 1 m", &planks_, 4, 60);
     bool rebuild = ImGui::IsItemDeactivatedAfterEdit();
-    ImGui::SliderInt("##loads", &loads_, 0, 12, "loads: %d");
+    slider("loads", &loads_, 0, 12);
     rebuild |= ImGui::IsItemDeactivatedAfterEdit();
-    ImGui::SliderFloat("##density", &density_, 0.1f, 10.0f, "plank density %.1f kg/m^2");
+    slider("plank density", &density_, 0.1f, 10.0f, "%.1f kg/m^2");
     rebuild |= ImGui::IsItemDeactivatedAfterEdit();
-    ImGui::SliderFloat("##friction", &friction_, 0.0f, 50.0f, "joint friction %.1f N m");
+    slider("joint friction", &friction_, 0.0f, 50.0f, "%.1f N m");
     rebuild |= ImGui::IsItemDeactivatedAfterEdit();
     if (rebuild) {
       setup();

@@ -5,6 +5,7 @@
 // rising) to land on it. With "teams", boxes of the same colour pass through each other
 // (World::setCustomFilter). The plot is the speed of the newest box on the belt, with the belt's.
 #include "rigid2d_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -92,17 +93,17 @@ protected:
   }
 
   void parameters() override {
-    if (ImGui::SliderFloat("##belt", &beltSpeed_, -1.0f, 6.0f, "belt speed %.1f m/s")) {
+    if (slider("belt speed", &beltSpeed_, -1.0f, 6.0f, "%.1f m/s")) {
       setup(); // the tangent speed is a shape's material: the belt is made again
     }
-    ImGui::SliderFloat("##throw", &throwSpeed_, 6.0f, 16.0f, "pad throws up at %.1f m/s");
-    ImGui::SliderFloat("##spawn", &spawnInterval_, 0.3f, 3.0f, "a box every %.1f s");
-    if (ImGui::Checkbox("teams (a custom filter)", &teams_)) {
+    slider("pad throws up at", &throwSpeed_, 6.0f, 16.0f, "%.1f m/s");
+    slider("a box every", &spawnInterval_, 0.3f, 3.0f, "%.1f s");
+    if (checkbox("teams (a custom filter)", &teams_)) {
       setup();
     }
-    ImGui::TextWrapped("A box thrown at %.1f m/s rises %.1f m (v^2 / 2g); the platform's top is %.1f m above the pad.",
-                       static_cast<double>(throwSpeed_), static_cast<double>(throwSpeed_ * throwSpeed_ / 20.0f),
-                       static_cast<double>(platformTop - padTop));
+    textWrapped("A box thrown at %.1f m/s rises %.1f m (v^2 / 2g); the platform's top is %.1f m above the pad.",
+                static_cast<double>(throwSpeed_), static_cast<double>(throwSpeed_ * throwSpeed_ / 20.0f),
+                static_cast<double>(platformTop - padTop));
     speed_.plot("newest box's speed on the belt (m/s)", "%.2f m/s", 80.0f, std::min(0.0f, beltSpeed_),
                 std::max(0.5f, beltSpeed_ * 1.2f));
   }

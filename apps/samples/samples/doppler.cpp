@@ -10,6 +10,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/audio/audio.hpp>
 #include <impetus/error.hpp>
@@ -125,16 +126,16 @@ public:
 
   void ui() override {
     bool changed = false;
-    changed |= ImGui::SliderFloat("##v", &speed_, 0.0f, 300.0f, "source speed v %.0f m/s");
-    changed |= ImGui::SliderFloat("##f", &frequency_, 100.0f, 2000.0f, "frequency f %.0f Hz");
-    changed |= ImGui::SliderFloat("##d", &closest_, 1.0f, 60.0f, "closest approach d %.0f m");
-    changed |= ImGui::SliderFloat("##T", &temperature_, -30.0f, 40.0f, "air temperature %.0f C");
+    changed |= slider("source speed v", &speed_, 0.0f, 300.0f, "%.0f m/s");
+    changed |= slider("frequency f", &frequency_, 100.0f, 2000.0f, "%.0f Hz");
+    changed |= slider("closest approach d", &closest_, 1.0f, 60.0f, "%.0f m");
+    changed |= slider("air temperature", &temperature_, -30.0f, 40.0f, "%.0f C");
     if (changed) {
       setup();
     }
-    ImGui::Text("speed of sound c = %.1f m/s", pass_.speedOfSound);
-    ImGui::Text("approaching f c/(c - v) = %.1f Hz", approaching());
-    ImGui::Text("receding    f c/(c + v) = %.1f Hz", receding());
+    textWrapped("speed of sound c = %.1f m/s", pass_.speedOfSound);
+    textWrapped("approaching f c/(c - v) = %.1f Hz", approaching());
+    textWrapped("receding    f c/(c + v) = %.1f Hz", receding());
     measured_.plot("heard frequency, measured from the sound (Hz)", "%.1f Hz", 70.0f,
                    static_cast<float>(receding() * 0.97), static_cast<float>(approaching() * 1.03));
     formula_.plot("the formula f c / (c - v cos theta) (Hz)", "%.1f Hz", 70.0f, static_cast<float>(receding() * 0.97),

@@ -8,6 +8,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/mechanics/explosion.hpp>
@@ -119,16 +120,16 @@ public:
     float speed = static_cast<float>(settings_.speed);
     float life = static_cast<float>(settings_.life);
     float gravity = static_cast<float>(settings_.gravity);
-    bool changed = ImGui::SliderFloat("##speed", &speed, 1.0f, 50.0f, "strength (max speed) %.1f m/s");
-    changed |= ImGui::SliderFloat("##life", &life, 0.2f, 6.0f, "duration (max life) %.2f s");
-    changed |= ImGui::SliderFloat("##g", &gravity, -20.0f, 5.0f, "vertical acceleration %.2f m/s^2");
-    changed |= ImGui::SliderInt("##count", &settings_.count, 1, 2000, "particles %d", ImGuiSliderFlags_Logarithmic);
-    changed |= ImGui::Checkbox("a cone instead of all around", &cone_);
+    bool changed = slider("strength (max speed)", &speed, 1.0f, 50.0f, "%.1f m/s");
+    changed |= slider("duration (max life)", &life, 0.2f, 6.0f, "%.2f s");
+    changed |= slider("vertical acceleration", &gravity, -20.0f, 5.0f, "%.2f m/s^2");
+    changed |= slider("particles", &settings_.count, 1, 2000, "%d", ImGuiSliderFlags_Logarithmic);
+    changed |= checkbox("a cone instead of all around", &cone_);
     if (cone_) {
-      changed |= ImGui::SliderFloat("##dir", &directionDeg_, -180.0f, 180.0f, "direction %.0f deg");
-      changed |= ImGui::SliderFloat("##spread", &spreadDeg_, 1.0f, 90.0f, "half-width %.0f deg");
+      changed |= slider("direction", &directionDeg_, -180.0f, 180.0f, "%.0f deg");
+      changed |= slider("half-width", &spreadDeg_, 1.0f, 90.0f, "%.0f deg");
     }
-    ImGui::SliderFloat("##interval", &interval_, 0.2f, 5.0f, "a burst every %.1f s");
+    slider("a burst every", &interval_, 0.2f, 5.0f, "%.1f s");
     if (changed) {
       settings_.speed = speed;
       settings_.life = life;
@@ -136,7 +137,7 @@ public:
       settings_.direction = cone_ ? std::optional<double>(degToRad(static_cast<double>(directionDeg_))) : std::nullopt;
       settings_.spread = degToRad(static_cast<double>(spreadDeg_));
     }
-    ImGui::TextWrapped("%zu bursts alive, t = %.2f s", bursts_.size(), t_);
+    textWrapped("%zu bursts alive, t = %.2f s", bursts_.size(), t_);
     alive_.plot("particles alive", "%.0f");
     spread_.plot("spread of the newest burst: farthest particle from its origin (m)", "%.2f m");
   }

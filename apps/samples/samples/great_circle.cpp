@@ -3,8 +3,8 @@
 // shortest path, its heading changing all the way) and the rhumb line (geo/rhumb.hpp: one
 // constant compass bearing, a straight line on a Mercator chart, longer). The map is
 // equirectangular (x = longitude, y = latitude, in degrees) or Mercator (y = the stretched
-// latitude psi = asinh(tan phi), in degrees), with a 15-degree graticule; coastlines are left
-// out on purpose.
+// latitude psi = asinh(tan phi), in degrees), with a 15-degree graticule and the coastlines of
+// Natural Earth's 1:110m map (coastlines.hpp).
 //
 // Two aircraft fly the routes at the same speed, so the great circle's arrives first. Plots:
 // the great circle's heading along the route (it turns) against the rhumb line's constant one;
@@ -12,7 +12,9 @@
 // bearings.
 #include "sample.hpp"
 
+#include "coastlines.hpp"
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/geo/geo.hpp>
 
@@ -98,6 +100,7 @@ public:
 
   void draw(DebugDraw& draw) override {
     drawGraticule(draw);
+    drawCoastlines(draw);
     drawPath(draw, greatCirclePath_, palette::series[2]);
     drawPath(draw, rhumbPath_, palette::series[0]);
     draw.point(toMap(from_), 9.0f, palette::text);
@@ -112,12 +115,15 @@ public:
     const LatLon onRhumb = geo::rhumbDestination(from_, rhumbBearing_, std::min(flown, rhumbDistance_), radius_);
     draw.point(toMap(onGreatCircle), 7.0f, palette::series[2]);
     draw.point(toMap(onRhumb), 7.0f, palette::series[0]);
-    draw.text({-178.0f, -mapTop() - 8.0f}, "blue: great circle (shortest)   red: rhumb line (constant bearing)",
+    constexpr float lineHeightPixels = 18.0f;
+    draw.text({-178.0f, -mapTop() - 8.0f}, "blue: great circle (shortest)", palette::text);
+    draw.text({-178.0f, -mapTop() - 8.0f - lineHeightPixels * draw.pixelSize()}, "red: rhumb line (constant bearing)",
               palette::text);
   }
 
   void ui() override {
     bool changed = false;
+    labelColumn("route");
     if (ImGui::Combo(
             "##route", &route_,
             [](void*, int i, const char** out) {
@@ -133,26 +139,26 @@ public:
     float fromLon = static_cast<float>(from_.longitude);
     float toLat = static_cast<float>(to_.latitude);
     float toLon = static_cast<float>(to_.longitude);
-    changed |= ImGui::SliderFloat("##flat", &fromLat, -89.0f, 89.0f, "from latitude %.2f deg");
-    changed |= ImGui::SliderFloat("##flon", &fromLon, -180.0f, 180.0f, "from longitude %.2f deg");
-    changed |= ImGui::SliderFloat("##tlat", &toLat, -89.0f, 89.0f, "to latitude %.2f deg");
-    changed |= ImGui::SliderFloat("##tlon", &toLon, -180.0f, 180.0f, "to longitude %.2f deg");
-    changed |= ImGui::Checkbox("Mercator chart (rhumb lines straight)", &mercator_);
+    changed |= slider("from latitude", &fromLat, -89.0f, 89.0f, "%.2f deg");
+    changed |= slider("from longitude", &fromLon, -180.0f, 180.0f, "%.2f deg");
+    changed |= slider("to latitude", &toLat, -89.0f, 89.0f, "%.2f deg");
+    changed |= slider("to longitude", &toLon, -180.0f, 180.0f, "%.2f deg");
+    changed |= checkbox("Mercator chart (rhumb lines straight)", &mercator_);
     if (changed) {
       from_ = {fromLat, fromLon};
       to_ = {toLat, toLon};
       rebuild();
     }
-    ImGui::Text("great circle  %.1f km", greatCircleDistance_ / 1000.0);
-    ImGui::Text("rhumb line    %.1f km  (%+.2f %%)", rhumbDistance_ / 1000.0,
+    textWrapped("great circle  %.1f km", greatCircleDistance_ / 1000.0);
+    textWrapped("rhumb line    %.1f km  (%+.2f %%)", rhumbDistance_ / 1000.0,
                 100.0 * (rhumbDistance_ / std::max(greatCircleDistance_, 1e-9) - 1.0));
     if (vincenty_) {
-      ImGui::Text("WGS 84 (Vincenty) %.1f km", *vincenty_ / 1000.0);
+      textWrapped("WGS 84 (Vincenty) %.1f km", *vincenty_ / 1000.0);
     } else {
-      ImGui::Text("WGS 84 (Vincenty) did not converge (nearly antipodal)");
+      textWrapped("WGS 84 (Vincenty) did not converge (nearly antipodal)");
     }
-    ImGui::Text("initial bearing %.2f deg, final %.2f deg", initialBearing_, finalBearing_);
-    ImGui::Text("rhumb bearing   %.2f deg (held all the way)", rhumbBearing_);
+    textWrapped("initial bearing %.2f deg, final %.2f deg", initialBearing_, finalBearing_);
+    textWrapped("rhumb bearing   %.2f deg (held all the way)", rhumbBearing_);
     char overlay[96];
     std::snprintf(overlay, sizeof overlay, "%.1f -> %.1f deg; rhumb %.1f deg", initialBearing_, finalBearing_,
                   rhumbBearing_);
@@ -231,10 +237,43 @@ private:
       draw.segment({-180.0f, y}, {180.0f, y}, lat == 0 ? palette::grid.scaled(2.2f) : palette::grid.scaled(1.4f));
     }
     draw.box({-180.0f, -top}, {180.0f, top}, palette::staticBody.withAlpha(0.6f));
-    for (int lat = -60; lat <= 60; lat += 30) {
+    // Labels every 30 degrees, or 60 or 90 when the map is drawn too small for them.
+    const Color labelColor = palette::grid.scaled(3.0f);
+    constexpr float labelSpacingPixels = 56.0f; // room for "150 W" between two labels
+    int every = 30;
+    for (const int degrees : {30, 60, 90}) {
+      every = degrees;
+      if (static_cast<float>(degrees) >= labelSpacingPixels * draw.pixelSize()) {
+        break;
+      }
+    }
+    for (int lat = -90 + every; lat < 90; lat += every) {
       char label[16];
-      std::snprintf(label, sizeof label, "%d", lat);
-      draw.text({-179.0f, toMap({static_cast<double>(lat), 0.0}).y + 1.0f}, label, palette::grid.scaled(3.0f));
+      std::snprintf(label, sizeof label, "%d%s", std::abs(lat), lat > 0 ? " N" : (lat < 0 ? " S" : ""));
+      draw.text({-179.0f, toMap({static_cast<double>(lat), 0.0}).y + 1.0f}, label, labelColor);
+    }
+    for (int lon = -180 + every; lon < 180; lon += every) {
+      char label[16];
+      std::snprintf(label, sizeof label, "%d%s", std::abs(lon), lon > 0 ? " E" : (lon < 0 ? " W" : ""));
+      draw.text({static_cast<float>(lon) + 1.0f, -top + 1.0f}, label, labelColor);
+    }
+    draw.text({-178.0f, top + 8.0f},
+              mercator_ ? "degrees N/S, E/W; Mercator: y = asinh(tan latitude)" : "degrees N/S, E/W", labelColor);
+  }
+
+  void drawCoastlines(DebugDraw& draw) const {
+    const std::span<const CoastPoint> points = coastPoints();
+    const std::span<const int> starts = coastLineStarts();
+    const Color coast = palette::staticBody.scaled(1.3f);
+    std::vector<Vec2f> line;
+    for (std::size_t i = 0; i + 1 < starts.size(); ++i) {
+      line.clear();
+      for (int k = starts[i]; k < starts[i + 1]; ++k) {
+        const CoastPoint& p = points[static_cast<std::size_t>(k)];
+        // Not through toMap(): it would wrap the outlines' 180 E to 180 W.
+        line.push_back({p.longitude / 100.0f, toMap({p.latitude / 100.0, 0.0}).y});
+      }
+      draw.polyline(line, coast);
     }
   }
 

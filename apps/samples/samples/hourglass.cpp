@@ -7,6 +7,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/sensors/hourglass.hpp>
@@ -113,22 +114,22 @@ public:
   }
 
   void ui() override {
-    ImGui::SliderFloat("##tilt", &tiltDeg_, -180.0f, 180.0f, "tilt %.0f deg (0 upright, 180 over)");
+    slider("tilt (0 upright, 180 over)", &tiltDeg_, -180.0f, 180.0f, "%.0f deg");
     if (ImGui::Button("Flip")) {
       startFlip();
     }
     ImGui::SameLine();
-    ImGui::Checkbox("flip every 4 s", &autoFlip_);
-    bool changed = ImGui::SliderInt("##grains", &grains_, 50, 400, "%d grains");
-    changed |= ImGui::SliderFloat("##neck", &neckMillimetres_, 3.0f, 14.0f, "neck %.1f mm (grains 2 mm)");
-    changed |= ImGui::SliderFloat("##mu", &wallFriction_, 0.0f, 1.0f, "glass friction %.2f");
+    checkbox("flip every 4 s", &autoFlip_);
+    bool changed = slider("grains", &grains_, 50, 400);
+    changed |= slider("neck (grains are 2 mm)", &neckMillimetres_, 3.0f, 14.0f, "%.1f mm");
+    changed |= slider("glass friction", &wallFriction_, 0.0f, 1.0f, "%.2f");
     if (changed) {
       setup();
     }
     top_.plot("grains in the top bulb", "%.0f", 60.0f, 0.0f, static_cast<float>(grains_));
     bottom_.plot("grains in the bottom bulb", "%.0f", 60.0f, 0.0f, static_cast<float>(grains_));
-    ImGui::TextWrapped("A granular flow through a neck does not depend on the sand's height above it (Beverloo), "
-                       "unlike a liquid's: the count falls at a steady rate until the last grains.");
+    textWrapped("A granular flow through a neck does not depend on the sand's height above it (Beverloo), "
+                "unlike a liquid's: the count falls at a steady rate until the last grains.");
   }
 
 private:

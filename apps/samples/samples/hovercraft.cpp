@@ -7,6 +7,7 @@
 // and down change the thrust, right fires the port thruster (a right turn), left the starboard
 // one. Without keys an autopilot slaloms. Plots: speed (m/s), thrust (N), sideslip (deg).
 #include "rigid2d_sample.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/vehicles/hovercraft.hpp>
@@ -115,16 +116,16 @@ protected:
   }
 
   void parameters() override {
-    ImGui::Checkbox("autopilot slalom (without keys)", &autopilot_);
-    bool rebuild = ImGui::SliderFloat("##max", &params_.maxThrust, 1.0f, 50.0f, "max thrust %.1f N");
-    rebuild |= ImGui::SliderFloat("##steer", &params_.steeringForce, 0.0f, 20.0f, "bow thrusters %.1f N");
-    rebuild |= ImGui::SliderFloat("##cd", &params_.dragCoefficient, 0.1f, 5.0f, "drag coefficient %.2f");
-    rebuild |= ImGui::SliderFloat("##cdx", &params_.centreOfDrag.x, -10.0f, 5.0f, "centre of drag x %.1f m");
+    checkbox("autopilot slalom (without keys)", &autopilot_);
+    bool rebuild = slider("max thrust", &params_.maxThrust, 1.0f, 50.0f, "%.1f N");
+    rebuild |= slider("bow thrusters", &params_.steeringForce, 0.0f, 20.0f, "%.1f N");
+    rebuild |= slider("drag coefficient", &params_.dragCoefficient, 0.1f, 5.0f, "%.2f");
+    rebuild |= slider("centre of drag x", &params_.centreOfDrag.x, -10.0f, 5.0f, "%.1f m");
     if (rebuild) {
       setup();
     }
-    ImGui::TextWrapped("drag aft of the centre of mass (x < 0) steadies the craft; ahead of it (x > 0) the "
-                       "craft spins round");
+    textWrapped("drag aft of the centre of mass (x < 0) steadies the craft; ahead of it (x > 0) the "
+                "craft spins round");
     speed_.plot("speed (m/s)", "%.2f m/s");
     thrust_.plot("propeller thrust (N)", "%.2f N", 45.0f, 0.0f, params_.maxThrust);
     sideslip_.plot("sideslip: heading minus track (deg)", "%.1f deg");

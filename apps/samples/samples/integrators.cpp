@@ -10,6 +10,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/integrate/steppers.hpp>
 
@@ -125,15 +126,15 @@ public:
   }
 
   void ui() override {
-    bool changed = ImGui::SliderFloat("##k", &k_, 1.0f, 400.0f, "stiffness k %.0f N/m");
-    changed |= ImGui::SliderFloat("##m", &m_, 0.1f, 10.0f, "mass m %.2f kg");
-    changed |= ImGui::SliderFloat("##c", &c_, 0.0f, 5.0f, "damping c %.2f N s/m");
-    changed |= ImGui::SliderFloat("##h", &h_, 0.002f, 0.25f, "step h %.3f s", ImGuiSliderFlags_Logarithmic);
+    bool changed = slider("stiffness k", &k_, 1.0f, 400.0f, "%.0f N/m");
+    changed |= slider("mass m", &m_, 0.1f, 10.0f, "%.2f kg");
+    changed |= slider("damping c", &c_, 0.0f, 5.0f, "%.2f N s/m");
+    changed |= slider("step h", &h_, 0.002f, 0.25f, "%.3f s", ImGuiSliderFlags_Logarithmic);
     if (changed) {
       setup();
     }
     const double w = std::sqrt(static_cast<double>(k_ / m_));
-    ImGui::TextWrapped("w = %.2f rad/s, z = w h = %.3f, t = %.2f s", w, w * static_cast<double>(h_), t_);
+    textWrapped("w = %.2f rad/s, z = w h = %.3f, t = %.2f s", w, w * static_cast<double>(h_), t_);
     for (int i = 0; i < methodCount; ++i) {
       const auto k = static_cast<std::size_t>(i);
       char label[96];

@@ -4,6 +4,7 @@
 // iterations; the plot shows the widest gap between a joint's two anchors (m), the benchmark's
 // quality figure, with the net's kinetic energy.
 #include "bench_scene_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -25,12 +26,12 @@ protected:
   }
 
   void parameters() override {
-    ImGui::SliderInt("##grid", &grid_, 2, bench::jointGridSize, "circles per side: %d");
+    slider("circles per side", &grid_, 2, bench::jointGridSize);
     if (ImGui::IsItemDeactivatedAfterEdit()) {
       setup();
     }
     sceneControls();
-    ImGui::TextWrapped("circles of radius 0.4 m, 1 m apart; they do not collide (one negative group)");
+    textWrapped("circles of radius 0.4 m, 1 m apart; they do not collide (one negative group)");
     gap_.plot("widest joint gap (mm)", "%.2f mm");
     energy_.plot("kinetic energy (J per m of depth)", "%.1f J");
   }

@@ -10,6 +10,7 @@
 // The plots follow the revolute joint's angle (rad), the piston's travel (m) and the spring's
 // length (m); the spring's undamped period is 1/f.
 #include "rigid2d_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -173,17 +174,17 @@ protected:
   }
 
   void parameters() override {
-    if (ImGui::SliderFloat("##motor", &motorSpeed_, -10.0f, 10.0f, "revolute motor %.1f rad/s")) {
+    if (slider("revolute motor", &motorSpeed_, -10.0f, 10.0f, "%.1f rad/s")) {
       setRevoluteMotor(world(), revolute_, true, motorSpeed_, 50.0f);
     }
-    ImGui::SliderFloat("##hertz", &springHertz_, 0.2f, 5.0f, "spring %.2f Hz");
+    slider("spring", &springHertz_, 0.2f, 5.0f, "%.2f Hz");
     if (ImGui::IsItemDeactivatedAfterEdit()) {
       setup();
     }
     angle_.plot("revolute joint angle (rad)", "%.2f rad", 50.0f, -3.2f, 3.2f);
     travel_.plot("prismatic travel (m)", "%.2f m", 50.0f, -2.2f, 3.2f);
     length_.plot("spring length (m)", "%.3f m", 50.0f);
-    ImGui::TextWrapped("undamped spring period 1/f = %.2f s", 1.0 / static_cast<double>(springHertz_));
+    textWrapped("undamped spring period 1/f = %.2f s", 1.0 / static_cast<double>(springHertz_));
   }
 
 private:

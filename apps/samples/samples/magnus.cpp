@@ -13,6 +13,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/mechanics/aerodynamics.hpp>
@@ -88,18 +89,18 @@ public:
   }
 
   void ui() override {
-    bool changed = ImGui::SliderFloat("##rpm", &rpm_, -3000.0f, 3000.0f, "backspin %.0f rpm");
-    changed |= ImGui::SliderFloat("##v0", &speed0_, 5.0f, 60.0f, "launch speed %.1f m/s");
-    changed |= ImGui::SliderFloat("##angle", &angle_, -10.0f, 60.0f, "launch angle %.1f deg");
+    bool changed = slider("backspin", &rpm_, -3000.0f, 3000.0f, "%.0f rpm");
+    changed |= slider("launch speed", &speed0_, 5.0f, 60.0f, "%.1f m/s");
+    changed |= slider("launch angle", &angle_, -10.0f, 60.0f, "%.1f deg");
     if (changed) {
       setup();
     }
-    ImGui::TextWrapped("C = pi^2 rho r^3 w = %.4f N s/m; lift/weight at launch %.2f", c_,
-                       c_ * static_cast<double>(speed0_) / (mass_ * g));
+    textWrapped("C = pi^2 rho r^3 w = %.4f N s/m; lift/weight at launch %.2f", c_,
+                c_ * static_cast<double>(speed0_) / (mass_ * g));
     if (std::isfinite(singular_)) {
-      ImGui::TextWrapped("the book's formula divides by zero at t = m/C = %.2f s", singular_);
+      textWrapped("the book's formula divides by zero at t = m/C = %.2f s", singular_);
     }
-    ImGui::TextWrapped("drag + lift: lands at x = %.1f m after %.2f s", flight_.range, flight_.flightTime);
+    textWrapped("drag + lift: lands at x = %.1f m after %.2f s", flight_.range, flight_.flightTime);
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "up to %.3g J", energyGap_.empty() ? 0.0 : static_cast<double>(maxGap_));
     plotCurve("energy: book's formula minus exact (J), 0-5 s", energyGap_, overlay, 70.0f);

@@ -6,6 +6,7 @@
 // (docs/rigid2d.md, "Restitution"). The plot is the kinetic energy of each row, which an elastic
 // row keeps.
 #include "rigid2d_sample.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 
@@ -94,9 +95,9 @@ protected:
   }
 
   void parameters() override {
-    bool changed = ImGui::SliderInt("##raised", &raised_, 1, 3, "%d striking");
-    changed = ImGui::SliderFloat("##e", &restitution_, 0.5f, 1.0f, "restitution %.2f") || changed;
-    changed = ImGui::SliderFloat("##angle", &releaseDegrees_, 10.0f, 60.0f, "balls released from %.0f deg") || changed;
+    bool changed = slider("balls striking", &raised_, 1, 3);
+    changed = slider("restitution", &restitution_, 0.5f, 1.0f, "%.2f") || changed;
+    changed = slider("balls released from", &releaseDegrees_, 10.0f, 60.0f, "%.0f deg") || changed;
     if (changed || ImGui::Button("again")) {
       setup();
     }

@@ -10,6 +10,7 @@
 
 #include "particle_draw.hpp"
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -103,22 +104,22 @@ public:
   }
 
   void ui() override {
-    bool live = ImGui::SliderFloat("##wind", &wind_, -20.0f, 20.0f, "wind %.1f m/s");
-    live |= ImGui::SliderFloat("##cd", &cd_, 0.0f, 2.0f, "drag coefficient Cd %.2f");
+    bool live = slider("wind", &wind_, -20.0f, 20.0f, "%.1f m/s");
+    live |= slider("drag coefficient Cd", &cd_, 0.0f, 2.0f, "%.2f");
+    labelColumn("integrator");
     live |= ImGui::Combo("##integrator", &integrator_, integratorNames, 4);
-    live |= ImGui::Checkbox("particles collide with each other", &collisions_);
+    live |= checkbox("particles collide with each other", &collisions_);
     if (live) {
       world_->setSettings(settings());
     }
-    bool rebuild = ImGui::SliderFloat("##e", &restitution_, 0.0f, 1.0f, "restitution e %.2f");
-    rebuild |= ImGui::SliderFloat("##mu", &friction_, 0.0f, 1.0f, "friction mu %.2f");
-    rebuild |= ImGui::SliderFloat("##rate", &rate_, 1.0f, 200.0f, "%.0f particles/s");
+    bool rebuild = slider("restitution e", &restitution_, 0.0f, 1.0f, "%.2f");
+    rebuild |= slider("friction mu", &friction_, 0.0f, 1.0f, "%.2f");
+    rebuild |= slider("emission rate", &rate_, 1.0f, 200.0f, "%.0f /s");
     if (rebuild) {
       setup();
     }
-    ImGui::TextWrapped("terminal speed in still air sqrt(2 m g / (rho Cd A)) = %.1f m/s",
-                       cd_ > 0.0f ? std::sqrt(2.0 * 9.81 / (1.23 * static_cast<double>(cd_) * pi<double> * 0.01))
-                                  : 0.0);
+    textWrapped("terminal speed in still air sqrt(2 m g / (rho Cd A)) = %.1f m/s",
+                cd_ > 0.0f ? std::sqrt(2.0 * 9.81 / (1.23 * static_cast<double>(cd_) * pi<double> * 0.01)) : 0.0);
     count_.plot("particles", "%.0f");
     energy_.plot("kinetic energy (J)", "%.0f J");
     drift_.plot("mean horizontal velocity in the air (m/s)", "%.2f m/s");

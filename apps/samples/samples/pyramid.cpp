@@ -5,6 +5,7 @@
 // has sunk (m, from its start) and the deepest overlap between two boxes (m), with the kinetic
 // energy, which should fall to almost nothing once the stack settles.
 #include "bench_scene_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -31,20 +32,19 @@ protected:
   }
 
   void parameters() override {
-    bool rebuild = ImGui::Checkbox("ten pyramids side by side", &many_);
-    ImGui::SliderInt("##base", &base_, 2, 100, "base: %d boxes");
+    bool rebuild = checkbox("ten pyramids side by side", &many_);
+    slider("base", &base_, 2, 100, "%d boxes");
     rebuild |= ImGui::IsItemDeactivatedAfterEdit();
     if (many_) {
-      ImGui::SliderInt("##count", &count_, 1, 20, "pyramids: %d");
+      slider("pyramids", &count_, 1, 20);
       rebuild |= ImGui::IsItemDeactivatedAfterEdit();
     }
     if (rebuild) {
       setup();
     }
     sceneControls();
-    ImGui::TextWrapped("boxes of %.1f m, density %.0f kg/m^2, friction %.1f, steps of 1/60 s",
-                       2.0 * bench::pyramidBoxHalfSize, static_cast<double>(bench::sceneDensity),
-                       static_cast<double>(bench::sceneFriction));
+    textWrapped("boxes of %.1f m, density %.0f kg/m^2, friction %.1f, steps of 1/60 s", 2.0 * bench::pyramidBoxHalfSize,
+                static_cast<double>(bench::sceneDensity), static_cast<double>(bench::sceneFriction));
     sink_.plot("top box sinking (mm)", "%.2f mm");
     overlap_.plot("deepest overlap (mm)", "%.2f mm");
     energy_.plot("kinetic energy (J per m of depth)", "%.3g J");

@@ -4,6 +4,7 @@
 // and joints are created and destroyed while thousands of others fall, pile up and sleep: the
 // plots show how many bodies are alive and how many sleep.
 #include "bench_scene_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -39,8 +40,8 @@ protected:
 
   void parameters() override {
     sceneControls();
-    ImGui::TextWrapped("a column of %d groups of %d ragdolls every %d steps, %d columns at most", bench::rainFloors,
-                       bench::rainGroupSize, bench::rainSpawnInterval, bench::rainColumns);
+    textWrapped("a column of %d groups of %d ragdolls every %d steps, %d columns at most", bench::rainFloors,
+                bench::rainGroupSize, bench::rainSpawnInterval, bench::rainColumns);
     bodies_.plot("ragdoll bodies alive", "%.0f");
     asleep_.plot("ragdoll bodies asleep", "%.0f");
   }

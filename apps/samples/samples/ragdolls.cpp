@@ -4,6 +4,7 @@
 // the limbs fold; the plots show the widest joint gap (m) and the kinetic energy as the pile
 // settles. Drag a ragdoll with the mouse.
 #include "bench_scene_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -26,9 +27,9 @@ protected:
   }
 
   void parameters() override {
-    ImGui::SliderInt("##columns", &columns_, 1, bench::ragdollColumns, "columns: %d");
+    slider("columns", &columns_, 1, bench::ragdollColumns);
     bool rebuild = ImGui::IsItemDeactivatedAfterEdit();
-    ImGui::SliderInt("##rows", &rows_, 1, bench::ragdollRows, "rows: %d");
+    slider("rows", &rows_, 1, bench::ragdollRows);
     rebuild |= ImGui::IsItemDeactivatedAfterEdit();
     if (rebuild) {
       setup();

@@ -3,6 +3,7 @@
 // the pairs) and the solver's (deep piles); the plots show the kinetic energy, which the
 // collisions dissipate (no restitution), and the number of touching contacts.
 #include "bench_scene_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -24,12 +25,12 @@ protected:
   }
 
   void parameters() override {
-    ImGui::SliderInt("##count", &count_, 10, 10000, "circles: %d", ImGuiSliderFlags_Logarithmic);
+    slider("circles", &count_, 10, 10000, "%d", ImGuiSliderFlags_Logarithmic);
     if (ImGui::IsItemDeactivatedAfterEdit()) {
       setup();
     }
     sceneControls();
-    ImGui::TextWrapped("circles of radius %.2f m in %zu rows", static_cast<double>(bench::rainRadius), bench::rainRows);
+    textWrapped("circles of radius %.2f m in %zu rows", static_cast<double>(bench::rainRadius), bench::rainRows);
     energy_.plot("kinetic energy (J per m of depth)", "%.1f J");
     contacts_.plot("touching contacts", "%.0f");
   }

@@ -6,6 +6,7 @@
 // distance to the closest hit (m) as the ray turns: a map of the room as seen from the origin.
 // Click on empty space to move the origin; drag bodies to put them in the way.
 #include "rigid2d_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -43,12 +44,23 @@ public:
         world().createShape(body, {}, Circle{{}, 0.7f});
       }
     }
-    angle_ = 0.0f;
+    angle_ = startAngle;
     distance_.clear();
   }
   [[nodiscard]] CameraView initialView() const override { return {{0.0f, 8.0f}, 9.0f, 17.0f}; }
   [[nodiscard]] std::string_view controls() const override {
     return "Click empty space to move the ray's origin; drag bodies into its way.";
+  }
+
+  [[nodiscard]] std::string summary() const override {
+    const std::optional<RayHit> hit = world().castRayClosest(origin_, direction() * range_);
+    char text[96];
+    if (hit) {
+      std::snprintf(text, sizeof text, "; the ray hits at %.2f m", static_cast<double>(hit->fraction * range_));
+    } else {
+      std::snprintf(text, sizeof text, "; the ray misses");
+    }
+    return Rigid2dSample::summary() + text;
   }
 
   bool mouseDown(const Vec2f& p, MouseButton button) override {
@@ -94,12 +106,12 @@ protected:
   }
 
   void parameters() override {
-    ImGui::SliderFloat("##rate", &rate_, -2.0f, 2.0f, "turning at %.2f rad/s");
-    ImGui::SliderFloat("##range", &range_, 1.0f, 60.0f, "range %.0f m");
-    ImGui::SliderInt("##bounces", &bounces_, 0, 8, "bounces: %d");
-    ImGui::Checkbox("all hits along the first ray (castRayAll)", &allHits_);
-    ImGui::TextWrapped("origin (%.1f, %.1f) m, angle %.0f deg", static_cast<double>(origin_.x),
-                       static_cast<double>(origin_.y), static_cast<double>(angle_ * 57.29578f));
+    slider("turning at", &rate_, -2.0f, 2.0f, "%.2f rad/s");
+    slider("range", &range_, 1.0f, 60.0f, "%.0f m");
+    slider("bounces", &bounces_, 0, 8);
+    checkbox("all hits along the first ray (castRayAll)", &allHits_);
+    textWrapped("origin (%.1f, %.1f) m, angle %.0f deg", static_cast<double>(origin_.x), static_cast<double>(origin_.y),
+                static_cast<double>(angle_ * 57.29578f));
     distance_.plot("distance to the closest hit (m)", "%.2f m", 80.0f, 0.0f, range_);
   }
 
@@ -107,9 +119,12 @@ private:
   [[nodiscard]] Vec2f direction() const { return {std::cos(angle_), std::sin(angle_)}; }
 
   Vec2f origin_{0.0f, 6.0f};
-  float angle_ = 0.0f;  // rad
-  float rate_ = 0.6f;   // rad/s
-  float range_ = 30.0f; // m
+  /// rad: pointing down to the right, so the ray sweeps the ground, the circle and the hexagon
+  /// (all hits, with bounces) in its first two seconds.
+  static constexpr float startAngle = -0.55f;
+  float angle_ = startAngle; // rad
+  float rate_ = 0.6f;        // rad/s
+  float range_ = 30.0f;      // m
   int bounces_ = 3;
   bool allHits_ = true;
   History distance_;

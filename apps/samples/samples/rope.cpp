@@ -14,6 +14,7 @@
 #include "particle_drag.hpp"
 #include "particle_draw.hpp"
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/particles/rope.hpp>
 
@@ -113,21 +114,20 @@ public:
   }
 
   void ui() override {
-    bool changed = ImGui::SliderInt("##segments", &segments_, 1, 40, "segments %d");
-    changed |= ImGui::SliderFloat("##mass", &mass_, 0.5f, 50.0f, "total mass %.1f kg");
-    changed |= ImGui::SliderFloat("##length", &length_, 1.0f, 12.0f, "length %.1f m");
-    changed |= ImGui::SliderInt("##substeps", &substeps_, 1, 32, "substeps %d");
-    changed |= ImGui::SliderFloat("##compliance", &compliance_, 0.0f, 0.01f, "XPBD compliance %.4f m/N");
-    changed |=
-        ImGui::SliderFloat("##k", &stiffness_, 10.0f, 5000.0f, "springs k %.0f N/m", ImGuiSliderFlags_Logarithmic);
-    changed |= ImGui::SliderFloat("##d", &damping_, 0.0f, 200.0f, "springs d %.0f N s/m");
+    bool changed = slider("segments", &segments_, 1, 40);
+    changed |= slider("total mass", &mass_, 0.5f, 50.0f, "%.1f kg");
+    changed |= slider("length", &length_, 1.0f, 12.0f, "%.1f m");
+    changed |= slider("substeps", &substeps_, 1, 32);
+    changed |= slider("XPBD compliance", &compliance_, 0.0f, 0.01f, "%.4f m/N");
+    changed |= slider("springs k", &stiffness_, 10.0f, 5000.0f, "%.0f N/m", ImGuiSliderFlags_Logarithmic);
+    changed |= slider("springs d", &damping_, 0.0f, 200.0f, "%.0f N s/m");
     if (changed) {
       setup();
     }
     const double m = static_cast<double>(mass_) / (segments_ + 1);
     const double h = 1.0 / 60.0 / substeps_;
-    ImGui::TextWrapped("springs stable while h = %.4f s < sqrt(m/k) = %.4f s and < m/(2d) = %.4f s", h,
-                       std::sqrt(m / static_cast<double>(stiffness_)), damping_ > 0.0f ? m / (2.0 * damping_) : 1e9);
+    textWrapped("springs stable while h = %.4f s < sqrt(m/k) = %.4f s and < m/(2d) = %.4f s", h,
+                std::sqrt(m / static_cast<double>(stiffness_)), damping_ > 0.0f ? m / (2.0 * damping_) : 1e9);
     for (std::size_t i = 0; i < 2; ++i) {
       ImGui::PushStyleColor(ImGuiCol_PlotLines,
                             ImVec4(palette::series[i].r, palette::series[i].g, palette::series[i].b, 1.0f));

@@ -5,6 +5,7 @@
 // Bodies are recycled (the oldest destroyed) to keep a steady stream: a destroyed visitor ends its
 // overlaps too.
 #include "rigid2d_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 
@@ -88,8 +89,8 @@ protected:
   }
 
   void parameters() override {
-    ImGui::SliderFloat("##interval", &spawnInterval_, 0.05f, 1.0f, "a body every %.2f s");
-    ImGui::SliderInt("##max", &maxBodies_, 10, 300, "at most %d bodies");
+    slider("a body every", &spawnInterval_, 0.05f, 1.0f, "%.2f s");
+    slider("at most", &maxBodies_, 10, 300, "%d bodies");
     static constexpr const char* names[] = {"static box sensor: bodies inside",
                                             "moving (kinematic) sensor: bodies inside",
                                             "static circle sensor: bodies inside"};

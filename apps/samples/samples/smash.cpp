@@ -5,16 +5,21 @@
 // to see the difference. The plots show the projectile's speed (m/s) and the total momentum
 // (kg m/s per m of depth), which contacts conserve (equal and opposite impulses).
 #include "bench_scene_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
+
+#include <cstdio>
+#include <string>
 
 namespace impetus::samples {
 namespace {
 
 class Smash final : public BenchSceneSample {
 public:
-  /// Wide enough for the debris: the block flies apart at several metres a second.
-  [[nodiscard]] CameraView initialView() const override { return {{2.0f, 0.0f}, 10.0f, 16.0f}; }
+  /// From the projectile's start (its left face at x = -14 m) to where it is two seconds later
+  /// (x = 17 m), with the block flying apart between.
+  [[nodiscard]] CameraView initialView() const override { return {{3.0f, 0.0f}, 10.0f, 19.5f}; }
   void setup() override {
     bench::Rigid2dScene scene = bench::smashAwakeScene(grid_);
     projectileIndex_ = 0;
@@ -42,6 +47,13 @@ protected:
     momentum_.push(length(p));
   }
 
+  [[nodiscard]] std::string summary() const override {
+    char text[64];
+    std::snprintf(text, sizeof text, "; the projectile is at x = %.1f m",
+                  static_cast<double>(world().transform(sceneBodies()[projectileIndex_]).p.x));
+    return BenchSceneSample::summary() + text;
+  }
+
   [[nodiscard]] std::optional<Color> bodyColorOf(rigid2d::BodyId body) const override {
     if (body == sceneBodies()[projectileIndex_]) {
       return palette::bullet;
@@ -50,16 +62,16 @@ protected:
   }
 
   void parameters() override {
-    bool rebuild = ImGui::Checkbox("bullet (continuous collision)", &bullet_);
-    ImGui::SliderInt("##grid", &grid_, 4, bench::smashGrid, "boxes per side of the block: %d");
+    bool rebuild = checkbox("bullet (continuous collision)", &bullet_);
+    slider("boxes per side of the block", &grid_, 4, bench::smashGrid);
     rebuild |= ImGui::IsItemDeactivatedAfterEdit();
-    ImGui::SliderFloat("##speed", &speed_, 5.0f, 200.0f, "projectile: %.0f m/s");
+    slider("projectile", &speed_, 5.0f, 200.0f, "%.0f m/s");
     rebuild |= ImGui::IsItemDeactivatedAfterEdit();
     if (rebuild) {
       setup();
     }
     sceneControls();
-    ImGui::TextWrapped("the projectile moves %.2f m per 1/60 s step; the boxes are 0.2 m", speed_ / 60.0);
+    textWrapped("the projectile moves %.2f m per 1/60 s step; the boxes are 0.2 m", speed_ / 60.0);
     speedHistory_.plot("projectile speed (m/s)", "%.1f m/s");
     momentum_.plot("total momentum (kg m/s per m of depth)", "%.1f kg m/s");
   }

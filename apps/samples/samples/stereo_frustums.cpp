@@ -11,6 +11,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/display/stereo.hpp>
 #include <impetus/display/stereo_frustum.hpp>
@@ -103,18 +104,18 @@ public:
   }
 
   void ui() override {
-    bool changed = ImGui::SliderFloat("##e", &interaxial_, 0.05f, 3.0f, "interaxial e %.2f m");
-    changed |= ImGui::SliderFloat("##C", &convergence_, 2.0f, 12.0f, "convergence C %.1f m");
-    changed |= ImGui::SliderFloat("##fov", &fovDeg_, 20.0f, 100.0f, "vertical fov %.0f deg");
-    ImGui::Checkbox("toe-in instead of off-axis (for comparison)", &toeIn_);
+    bool changed = slider("interaxial e", &interaxial_, 0.05f, 3.0f, "%.2f m");
+    changed |= slider("convergence C", &convergence_, 2.0f, 12.0f, "%.1f m");
+    changed |= slider("vertical fov", &fovDeg_, 20.0f, 100.0f, "%.0f deg");
+    checkbox("toe-in instead of off-axis (for comparison)", &toeIn_);
     if (changed) {
       updateCurve();
     }
     const StereoCamera c = camera();
-    ImGui::TextWrapped("toe-in angle %.2f deg; separation e/W = %.4f", radToDeg(toeInAngle(c)),
-                       separationFromInteraxial(c.interaxial, c.convergence, horizontalFov(c.verticalFov, c.aspect)));
-    ImGui::TextWrapped("largest vertical parallax in the eyes' images: off-axis %.2g, toe-in %.2g (NDC units)",
-                       verticalParallax(false), verticalParallax(true));
+    textWrapped("toe-in angle %.2f deg; separation e/W = %.4f", radToDeg(toeInAngle(c)),
+                separationFromInteraxial(c.interaxial, c.convergence, horizontalFov(c.verticalFov, c.aspect)));
+    textWrapped("largest vertical parallax in the eyes' images: off-axis %.2g, toe-in %.2g (NDC units)",
+                verticalParallax(false), verticalParallax(true));
     parallax_.plot("probe's screen parallax (m)", "%.3f m");
     plotCurve("P/e for Z from C/2 to 20 C (0 at C, 0.9 at 10 C)", curve_, "budget: [C/2, 100 C]", 70.0f, -1.0f, 1.0f);
   }

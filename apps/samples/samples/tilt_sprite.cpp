@@ -10,6 +10,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/sensors/accelerometer.hpp>
@@ -134,19 +135,19 @@ public:
   }
 
   void ui() override {
-    bool changed = ImGui::SliderFloat("##mus", &staticFriction_, 0.0f, 0.5f, "static friction mu_s %.2f");
-    changed |= ImGui::SliderFloat("##muk", &kineticFriction_, 0.0f, 0.5f, "kinetic friction mu_k %.2f (<= mu_s)");
-    changed |= ImGui::SliderFloat("##drag", &drag_, 0.0f, 3.0f, "drag %.2f 1/s");
-    changed |= ImGui::SliderFloat("##e", &restitution_, 0.0f, 1.0f, "edge restitution %.2f (0: the book)");
-    changed |= ImGui::SliderFloat("##fc", &cutoffHz_, 0.2f, 25.0f, "low-pass cut-off %.1f Hz (60 Hz samples)");
-    ImGui::SliderFloat("##noise", &noise_, 0.0f, 0.3f, "sensor noise %.2f g rms");
-    ImGui::Checkbox("low-pass filter", &filter_);
+    bool changed = slider("static friction mu_s", &staticFriction_, 0.0f, 0.5f, "%.2f");
+    changed |= slider("kinetic friction mu_k (<= mu_s)", &kineticFriction_, 0.0f, 0.5f, "%.2f");
+    changed |= slider("drag", &drag_, 0.0f, 3.0f, "%.2f 1/s");
+    changed |= slider("edge restitution (0: the book)", &restitution_, 0.0f, 1.0f, "%.2f");
+    changed |= slider("low-pass cut-off (samples at 60 Hz)", &cutoffHz_, 0.2f, 25.0f, "%.1f Hz");
+    slider("sensor noise", &noise_, 0.0f, 0.3f, "%.2f g rms");
+    checkbox("low-pass filter", &filter_);
     ImGui::SameLine();
-    ImGui::Checkbox("scripted tilt", &autoTilt_);
+    checkbox("scripted tilt", &autoTilt_);
     if (changed) {
       setup();
     }
-    ImGui::TextWrapped("%d edge hits", sprite_->edgeHits());
+    textWrapped("%d edge hits", sprite_->edgeHits());
     raw_.plot("raw x reading (g)", "%.3f g");
     filtered_.plot("x reading the sprite uses (g)", "%.3f g");
     speed_.plot("sprite speed (m/s)", "%.3f m/s");

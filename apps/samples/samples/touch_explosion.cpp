@@ -11,6 +11,7 @@
 #include "sample.hpp"
 
 #include "plot.hpp"
+#include "ui.hpp"
 
 #include <impetus/math/scalar.hpp>
 #include <impetus/sensors/gestures.hpp>
@@ -183,17 +184,17 @@ public:
   }
 
   void ui() override {
-    bool changed = ImGui::SliderFloat("##speed", &baseSpeed_, 2.0f, 30.0f, "base strength (max speed) %.1f m/s");
-    changed |= ImGui::SliderFloat("##life", &life_, 0.3f, 4.0f, "duration (max life) %.2f s");
-    changed |= ImGui::SliderInt("##count", &count_, 5, 400, "particles per burst %d");
-    changed |= ImGui::Checkbox("multitouch (one burst per finger)", &multitouch_);
-    ImGui::Checkbox("play the recorded script", &playing_);
+    bool changed = slider("base strength (max speed)", &baseSpeed_, 2.0f, 30.0f, "%.1f m/s");
+    changed |= slider("duration (max life)", &life_, 0.3f, 4.0f, "%.2f s");
+    changed |= slider("particles per burst", &count_, 5, 400);
+    changed |= checkbox("multitouch (one burst per finger)", &multitouch_);
+    checkbox("play the recorded script", &playing_);
     if (changed) {
       setup();
     }
-    ImGui::TextWrapped("Pinch: strength x%.2f. Twist: %s.", strength_,
-                       direction_ ? "a cone along the arrow" : "none yet (all around)");
-    ImGui::TextWrapped("%zu bursts so far; %zu fingers down", demo_->burstCount(), demo_->tracker().activeCount());
+    textWrapped("Pinch: strength x%.2f. Twist: %s.", strength_,
+                direction_ ? "a cone along the arrow" : "none yet (all around)");
+    textWrapped("%zu bursts so far; %zu fingers down", demo_->burstCount(), demo_->tracker().activeCount());
     for (const std::string& line : log_) {
       ImGui::TextUnformatted(line.c_str());
     }

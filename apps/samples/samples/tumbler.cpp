@@ -4,6 +4,7 @@
 // boxes' kinetic energy and how high the pile is carried (the mean height of the boxes above the
 // drum's centre).
 #include "bench_scene_sample.hpp"
+#include "ui.hpp"
 
 #include <imgui.h>
 #include <impetus/math/scalar.hpp>
@@ -44,11 +45,11 @@ protected:
   }
 
   void parameters() override {
-    ImGui::SliderInt("##grid", &grid_, 2, bench::tumblerGrid, "boxes per side: %d");
+    slider("boxes per side", &grid_, 2, bench::tumblerGrid);
     if (ImGui::IsItemDeactivatedAfterEdit()) {
       setup();
     }
-    if (ImGui::SliderFloat("##speed", &speedDegrees_, -90.0f, 90.0f, "drum: %.0f deg/s")) {
+    if (slider("drum", &speedDegrees_, -90.0f, 90.0f, "%.0f deg/s")) {
       setDrumSpeed();
     }
     sceneControls();
