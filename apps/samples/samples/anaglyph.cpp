@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 namespace impetus::samples {
@@ -109,10 +110,11 @@ public:
     drawImage(draw, mixed_, {-8.0f, -4.5f}, 16.0f / imageWidth);
     drawImage(draw, left_, {-8.0f, -10.0f}, 7.8f / imageWidth);
     drawImage(draw, right_, {0.2f, -10.0f}, 7.8f / imageWidth);
-    char text[96];
-    std::snprintf(text, sizeof text, "%s anaglyph (left eye red, right eye cyan)",
-                  std::string(toString(mode_)).c_str());
-    draw.text({-8.0f, 5.3f}, text, palette::text);
+    // The title in two short lines above the image: one long line runs out of a small view.
+    constexpr float lineHeightPixels = 18.0f;
+    const std::string title = std::string(toString(mode_)) + " anaglyph";
+    draw.text({-8.0f, 5.3f + lineHeightPixels * draw.pixelSize()}, title, palette::text);
+    draw.text({-8.0f, 5.3f}, "left eye red, right eye cyan", palette::text);
     draw.text({-8.0f, -5.1f}, "left eye", palette::text);
     draw.text({0.2f, -5.1f}, "right eye", palette::text);
   }
