@@ -118,7 +118,8 @@ public:
     return true;
   }
 
-  [[nodiscard]] CameraView initialView() const override { return {{0.5f * separation - 10.0f, 5.0f}, 40.0f, 115.0f}; }
+  /// Both worlds, from the player's start (x = -20 m) to past the other world's crash site.
+  [[nodiscard]] CameraView initialView() const override { return {{0.5f * separation - 10.0f, 5.0f}, 30.0f, 85.0f}; }
   [[nodiscard]] std::string summary() const override {
     return "book's impulse: " + (arenas_[0]->report.empty() ? std::string("no hit yet") : arenas_[0]->report) +
            "; soft step: " + (arenas_[1]->report.empty() ? std::string("no hit yet") : arenas_[1]->report);
@@ -128,7 +129,7 @@ public:
   }
 
   void draw(DebugDraw& draw) override {
-    static constexpr std::array<const char*, 2> titles{"the book's impulse (ch. 10)", "the soft-step solver"};
+    static constexpr std::array<const char*, 2> titles{"book's impulse (ch. 10)", "soft step"};
     Rigid2dDrawOptions options;
     options.contacts = true;
     options.centersOfMass = true;
@@ -146,7 +147,7 @@ public:
         }
         shifted.polygon(outline, palette::text.withAlpha(0.6f));
       }
-      shifted.text({-45.0f, 42.0f}, titles[i], palette::text);
+      shifted.text({-30.0f, 28.0f}, titles[i], palette::text);
     }
   }
 
