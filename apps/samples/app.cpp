@@ -438,7 +438,7 @@ void App::drawScene() {
   }
   // Labels go through ImGui's background list: under the panels, over the scene.
   ImDrawList* list = ImGui::GetBackgroundDrawList();
-  const float x0 = static_cast<float>(camera_.x());
+  const auto x0 = static_cast<float>(camera_.x());
   list->PushClipRect(ImVec2(x0, 0.0f),
                      ImVec2(x0 + static_cast<float>(camera_.width()), static_cast<float>(camera_.height())));
   for (const DrawLabel& label : batch_.labels()) {

@@ -49,7 +49,11 @@ void fill(const std::vector<std::string>& pieces, float width, const std::functi
           std::vector<std::string>& lines) {
   std::string line;
   for (const std::string& piece : pieces) {
-    std::string candidate = line.empty() ? piece : line + ' ' + piece;
+    std::string candidate = line;
+    if (!candidate.empty()) {
+      candidate += ' ';
+    }
+    candidate += piece;
     if (line.empty() || measure(candidate) <= width) {
       line = std::move(candidate);
     } else {
@@ -170,7 +174,7 @@ void textWrapped(const char* format, ...) {
   char text[1024];
   va_list args;
   va_start(args, format);
-  std::vsnprintf(text, sizeof text, format, args);
+  std::vsnprintf(text, sizeof text, format, args); // NOLINT(clang-analyzer-valist.Uninitialized): va_start is above
   va_end(args);
   textWrappedUnformatted(text);
 }

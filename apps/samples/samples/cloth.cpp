@@ -72,12 +72,9 @@ public:
   }
 
   [[nodiscard]] bool finite() const override {
-    for (const Vec3f& p : world_->positions()) {
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-        return false;
-      }
-    }
-    return true;
+    return std::ranges::all_of(world_->positions(), [](const Vec3f& p) {
+      return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    });
   }
 
   [[nodiscard]] std::string summary() const override {
@@ -97,6 +94,7 @@ public:
       return true; // one particle at a time
     }
     std::vector<ParticleId> pinned;
+    pinned.reserve(static_cast<std::size_t>(rows_));
     for (int r = 0; r < rows_; ++r) {
       pinned.push_back(cloth_.at(r, 0));
     }

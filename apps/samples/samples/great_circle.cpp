@@ -135,10 +135,10 @@ public:
       to_ = routes[route_].to;
       changed = true;
     }
-    float fromLat = static_cast<float>(from_.latitude);
-    float fromLon = static_cast<float>(from_.longitude);
-    float toLat = static_cast<float>(to_.latitude);
-    float toLon = static_cast<float>(to_.longitude);
+    auto fromLat = static_cast<float>(from_.latitude);
+    auto fromLon = static_cast<float>(from_.longitude);
+    auto toLat = static_cast<float>(to_.latitude);
+    auto toLon = static_cast<float>(to_.longitude);
     changed |= slider("from latitude", &fromLat, -89.0f, 89.0f, "%.2f deg");
     changed |= slider("from longitude", &fromLon, -180.0f, 180.0f, "%.2f deg");
     changed |= slider("to latitude", &toLat, -89.0f, 89.0f, "%.2f deg");
@@ -271,7 +271,7 @@ private:
       for (int k = starts[i]; k < starts[i + 1]; ++k) {
         const CoastPoint& p = points[static_cast<std::size_t>(k)];
         // Not through toMap(): it would wrap the outlines' 180 E to 180 W.
-        line.push_back({p.longitude / 100.0f, toMap({p.latitude / 100.0, 0.0}).y});
+        line.emplace_back(static_cast<float>(p.longitude) / 100.0f, toMap({p.latitude / 100.0, 0.0}).y);
       }
       draw.polyline(line, coast);
     }
