@@ -66,6 +66,9 @@ public:
   virtual void point(const Vec2f& p, float sizePixels, const Color& color) = 0;
   /// A text label whose top-left corner is at the world point p (screen-aligned, fixed size).
   virtual void text(const Vec2f& p, std::string_view label, const Color& color) = 0;
+  /// Screen pixels from one line of text to the next (the panels' 15 px font and its spacing):
+  /// a second line goes textLinePixels * pixelSize() metres below the first.
+  static constexpr float textLinePixels = 18.0f;
   /// The world length of one pixel at the current zoom, m: for sizes that should look the same
   /// on screen (arrow heads, axis lengths).
   [[nodiscard]] virtual float pixelSize() const = 0;

@@ -9,7 +9,6 @@
 
 #include <imgui.h>
 
-#include <filesystem>
 #include <functional>
 #include <string>
 #include <string_view>

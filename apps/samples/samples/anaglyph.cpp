@@ -111,9 +111,8 @@ public:
     drawImage(draw, left_, {-8.0f, -10.0f}, 7.8f / imageWidth);
     drawImage(draw, right_, {0.2f, -10.0f}, 7.8f / imageWidth);
     // The title in two short lines above the image: one long line runs out of a small view.
-    constexpr float lineHeightPixels = 18.0f;
     const std::string title = std::string(toString(mode_)) + " anaglyph";
-    draw.text({-8.0f, 5.3f + lineHeightPixels * draw.pixelSize()}, title, palette::text);
+    draw.text({-8.0f, 5.3f + DebugDraw::textLinePixels * draw.pixelSize()}, title, palette::text);
     draw.text({-8.0f, 5.3f}, "left eye red, right eye cyan", palette::text);
     draw.text({-8.0f, -5.1f}, "left eye", palette::text);
     draw.text({0.2f, -5.1f}, "right eye", palette::text);

@@ -115,10 +115,9 @@ public:
     const LatLon onRhumb = geo::rhumbDestination(from_, rhumbBearing_, std::min(flown, rhumbDistance_), radius_);
     draw.point(toMap(onGreatCircle), 7.0f, palette::series[2]);
     draw.point(toMap(onRhumb), 7.0f, palette::series[0]);
-    constexpr float lineHeightPixels = 18.0f;
     draw.text({-178.0f, -mapTop() - 8.0f}, "blue: great circle (shortest)", palette::text);
-    draw.text({-178.0f, -mapTop() - 8.0f - lineHeightPixels * draw.pixelSize()}, "red: rhumb line (constant bearing)",
-              palette::text);
+    draw.text({-178.0f, -mapTop() - 8.0f - DebugDraw::textLinePixels * draw.pixelSize()},
+              "red: rhumb line (constant bearing)", palette::text);
   }
 
   void ui() override {
