@@ -125,6 +125,24 @@ Box2D3Scene::~Box2D3Scene() { b2DestroyWorld(impl_->world); }
 
 void Box2D3Scene::step() { b2World_Step(impl_->world, sceneTimeStep, box2d3Substeps); }
 
+rigid2d::StepProfile Box2D3Scene::profile() const {
+  const b2Profile p = b2World_GetProfile(impl_->world);
+  rigid2d::StepProfile out;
+  out.step = p.step;
+  out.pairs = p.pairs;
+  out.collide = p.collide;
+  out.solve = p.solve;
+  out.prepare = p.solverSetup + p.prepareConstraints;
+  out.integrateVelocities = p.integrateVelocities;
+  out.warmStart = p.warmStart;
+  out.solveConstraints = p.solveImpulses;
+  out.integratePositions = p.integratePositions;
+  out.relax = p.relaxImpulses + p.applyRestitution;
+  out.storeImpulses = p.storeImpulses + p.jointEvents;
+  out.finalize = p.transforms + p.splitIslands + p.sleepIslands + p.hitEvents + p.refit + p.bullets + p.sensorHits;
+  return out;
+}
+
 float Box2D3Scene::height(std::uint32_t body) const {
   return static_cast<float>(b2Body_GetPosition(impl_->bodies[body]).y);
 }

@@ -39,6 +39,10 @@ public:
   [[nodiscard]] float height(std::uint32_t body) const;
   /// Every body's transform (of its origin), in scene order.
   [[nodiscard]] std::vector<Transform2f> transforms() const;
+  /// The last step's time by stage, ms (b2World_GetProfile), in Impetus' stage names: prepare is
+  /// v3's solver setup and constraint preparation; finalize its transforms, islands, events,
+  /// refit and continuous collision.
+  [[nodiscard]] rigid2d::StepProfile profile() const;
   /// Contacts touching now (Box2D v3's constraint graph and overflow).
   [[nodiscard]] std::size_t touchingContacts() const;
   /// "box2d 3.x.y", from the library's own version.

@@ -60,7 +60,8 @@ struct EngineResult {
   float largestJointGap = 0.0f; ///< m, the widest gap between a joint's anchors (scenes with joints)
   std::size_t touchingContacts = 0;
   bool finite = true;
-  StepProfile profile; ///< Impetus only: the mean of World::profile() over the steps, ms
+  StepProfile
+      profile; ///< Impetus and Box2D v3: the mean of the steps' profiles (World::profile(), b2World_GetProfile), ms
 };
 
 /// The profile's parts by name, in step order (World::profile()).
@@ -196,11 +197,18 @@ EngineResult runBox2D3(const bench::Rigid2dScene& scene, int steps, int threads)
         script(i, built);
       }
       built.step();
+      const StepProfile stepProfile = built.profile();
+      for (float StepProfile::*part : profileMembers) {
+        r.profile.*part += stepProfile.*part;
+      }
       for (std::size_t k = 0; k < scene.tops.size(); ++k) {
         watch.observe(k, built.height(scene.tops[k]));
       }
     }
   });
+  for (float StepProfile::*part : profileMembers) {
+    r.profile.*part /= static_cast<float>(steps);
+  }
   r.topMaxSink = watch.maxSink;
   r.msPerStep = ms / steps;
   r.touchingContacts = built.touchingContacts();
@@ -454,6 +462,13 @@ int main(int argc, char** argv) {
       if (ri) {
         std::printf("%-14s Impetus ms/step by stage:", "");
         for (const auto& [part, ms] : profileParts(ri->profile)) {
+          std::printf(" %s %.3f", part, static_cast<double>(ms));
+        }
+        std::printf("\n");
+      }
+      if (rb3) {
+        std::printf("%-14s Box2D v3 ms/step by stage:", "");
+        for (const auto& [part, ms] : profileParts(rb3->profile)) {
           std::printf(" %s %.3f", part, static_cast<double>(ms));
         }
         std::printf("\n");

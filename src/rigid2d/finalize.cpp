@@ -23,7 +23,7 @@ bool growFatBoxes(WorldState& w, const Body& b) {
     const bool isStatic = b.type == BodyType::staticBody;
     const AABB box = isStatic ? shapeBox(s, b.transform) : reachBox(s, b.transform);
     if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
-      fatBox = enlarge(box, isStatic ? 0.0f : aabbMargin);
+      fatBox = enlarge(box, isStatic ? 0.0f : s.margin);
       s.fatBoxGrown = true;
       grew = true;
     }

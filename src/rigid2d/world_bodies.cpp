@@ -198,7 +198,8 @@ ShapeId addShape(WorldState& w, BodyId bodyId, const ShapeDef& def, const detail
   s.id = id;
   s.alive = true;
   s.inStaticTree = b.type == BodyType::staticBody;
-  w.fatBoxes[id.index] = s.inStaticTree ? shapeBox(s, b.transform) : enlarge(reachBox(s, b.transform), aabbMargin);
+  s.margin = detail::fatBoxMargin(geometry);
+  w.fatBoxes[id.index] = s.inStaticTree ? shapeBox(s, b.transform) : enlarge(reachBox(s, b.transform), s.margin);
   s.proxy = w.treeOf(s).createProxy(w.fatBoxes[id.index], id.index);
   w.moveBuffer.push_back(id.index);
   b.shapes.push_back(id.index);

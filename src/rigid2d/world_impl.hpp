@@ -60,6 +60,7 @@ struct Shape {
   bool sensor = false;
   std::uint64_t userData = 0;
   std::int32_t proxy = DynamicTree::nullNode;
+  float margin = 0.0f;       ///< how far a moving shape's fat box reaches past its box, m (fatBoxMargin)
   bool inStaticTree = false; ///< which broadphase tree holds the proxy (fat box: WorldState::fatBoxes)
   bool fatBoxGrown = false;  ///< the finalize gave it a new fat box that its tree does not hold yet
   ShapeId id;
@@ -395,6 +396,10 @@ void recordManifoldFrame(Contact& contact, const Transform2f& xfA, const Transfo
 /// Without it a 6 mm ball stopped by the static sweep half a millimetre above the floor, its
 /// fat box 0.2 mm short of the floor's, had no contact: it hung there while gravity wound its
 /// velocity up.
+/// A moving shape's fat-box margin: aabbMargin, or aabbMarginFraction of its extent (the
+/// farthest its outline reaches from its centre) when that is less, m.
+[[nodiscard]] float fatBoxMargin(const Geometry& g);
+
 [[nodiscard]] inline AABB reachBox(const Shape& s, const Transform2f& xf) {
   return enlarge(shapeBox(s, xf), speculativeDistance);
 }

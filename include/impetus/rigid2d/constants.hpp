@@ -13,8 +13,14 @@ inline constexpr float linearSlop = 0.005f;
 inline constexpr float speculativeDistance = 4.0f * linearSlop;
 
 /// Fat AABB margin: a moving shape is re-inserted in the broadphase only when it leaves its
-/// enlarged box. m.
-inline constexpr float aabbMargin = 0.1f;
+/// box enlarged by this much, m (at most; smaller shapes: aabbMarginFraction).
+inline constexpr float aabbMargin = 0.05f;
+
+/// A shape's fat-box margin is at most this fraction of its extent (the farthest its outline
+/// reaches from its centre): a small shape's fat box reaching 5 cm past it would overlap the
+/// boxes of neighbours it cannot touch for several steps, and each overlap is a pair the
+/// narrowphase tests every step (Box2D v3's B2_AABB_MARGIN_FRACTION). Dimensionless.
+inline constexpr float aabbMarginFraction = 0.125f;
 
 /// Polygons have at most this many vertices (a convex hull of more points is an error).
 inline constexpr int maxPolygonVertices = 8;
