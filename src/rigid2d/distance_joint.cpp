@@ -39,18 +39,19 @@ AxisGeometry currentGeometry(const JointFrame& f, const BodyState& a, const Body
 
 /// A minimum of (about) zero enforces nothing a length could break; acting on it would stop a body
 /// passing through the other anchor (a rope's end swinging past its pin).
-bool hasLowerLimit(const DistanceJointDef& def) { return def.enableLimit && def.minLength > linearSlop; }
+bool hasLowerLimit(const DistanceJointSettings& def) { return def.enableLimit && def.minLength > linearSlop; }
 /// The default infinity: no upper limit.
-bool hasUpperLimit(const DistanceJointDef& def) { return def.enableLimit && std::isfinite(def.maxLength); }
+bool hasUpperLimit(const DistanceJointSettings& def) { return def.enableLimit && std::isfinite(def.maxLength); }
 
 } // namespace
 
-bool isRigid(const DistanceJointDef& def) {
+bool isRigid(const DistanceJointSettings& def) {
   return !def.enableSpring || (def.enableLimit && def.minLength >= def.maxLength);
 }
 
-void prepareJoint(DistanceJoint& joint, const JointFrame& /*frame*/, const StepContext& context) {
-  const DistanceJointDef& def = joint.def;
+void prepareJoint(DistanceJoint& joint, const JointFrame& /*frame*/, const JointPose& /*pose*/,
+                  const StepContext& context) {
+  const DistanceJointSettings& def = joint.def;
   const bool rigid = isRigid(def);
   joint.spring.prepare(rigid ? 0.0f : def.hertz, def.dampingRatio, context.h);
   // What is switched off holds no impulse (it would be warm started otherwise).
@@ -82,7 +83,7 @@ void warmStartJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<B
 void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
-    const DistanceJointDef& def = joint.def;
+    const DistanceJointSettings& def = joint.def;
     const AxisGeometry g = currentGeometry(frame, a, b);
     joint.axis = g.row.linear;
     if (!g.defined || solver::rowInverseMass(g.row, frame) == 0.0f) {

@@ -9,8 +9,8 @@ namespace impetus::rigid2d::detail {
 /// On the row along the anchors' axis (positive pushes them apart): a row part (a rod) or a
 /// spring, motor and limit parts.
 struct DistanceJoint {
-  DistanceJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
-  RowPart rod;          ///< the rigid length, N s per substep
+  DistanceJointSettings def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  RowPart rod;               ///< the rigid length, N s per substep
   SpringPart spring;
   MotorPart motor;
   LimitPart limit; ///< minLength (pushes apart) and maxLength (pulls together)
@@ -20,8 +20,8 @@ struct DistanceJoint {
 };
 
 /// Rigid (a rod) unless a spring is asked for; a spring whose limits pin the length is a rod too.
-[[nodiscard]] bool isRigid(const DistanceJointDef& def);
-void prepareJoint(DistanceJoint& joint, const JointFrame& frame, const StepContext& context);
+[[nodiscard]] bool isRigid(const DistanceJointSettings& def);
+void prepareJoint(DistanceJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context);
 void warmStartJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(DistanceJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

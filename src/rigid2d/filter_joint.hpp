@@ -7,10 +7,12 @@
 namespace impetus::rigid2d::detail {
 
 struct FilterJoint {
-  FilterJointDef def;
+  struct NoSettings {};
+  NoSettings def; ///< a filter joint has no settings of its own
 };
 
-inline void prepareJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, const StepContext& /*context*/) {}
+inline void prepareJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, const JointPose& /*pose*/,
+                         const StepContext& /*context*/) {}
 inline void warmStartJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, std::vector<BodyState>& /*states*/,
                            std::uint32_t /*staticIndex*/) {}
 inline void solveJoint(FilterJoint& /*joint*/, const JointFrame& /*frame*/, std::vector<BodyState>& /*states*/,

@@ -46,11 +46,6 @@ void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, Join
   f.frameB = rotate(b.transform.q, joint.localAnchorB - b.localCenter);
   f.deltaCenter = b.center - a.center;
   f.deltaAngle = relativeAngle(b.transform.q, a.transform.q);
-  f.qA = a.transform.q;
-  f.qB = b.transform.q;
-  f.localCenterA = a.localCenter;
-  f.localCenterB = b.localCenter;
-  f.centerB = b.center;
   f.softness = context.jointSoftness;
   f.maxSpeed = context.maxLinearSpeed;
   f.maxSpin = context.maxAngularSpeed;
@@ -69,7 +64,8 @@ void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, Join
         },
         data);
   }
-  std::visit([&](auto& typed) { prepareJoint(typed, f, context); }, data);
+  const JointPose pose{a.transform.q, b.transform.q, a.localCenter, b.localCenter, b.center};
+  std::visit([&](auto& typed) { prepareJoint(typed, f, pose, context); }, data);
 }
 
 void prepareJoints(WorldState& w, const StepContext& context) {

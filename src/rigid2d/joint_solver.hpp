@@ -44,12 +44,17 @@ struct JointFrame {
   Vec2f frameA, frameB;                 ///< anchors relative to the centres of mass, world axes, at the step's start, m
   Vec2f deltaCenter;                    ///< cB - cA at the step's start, m
   float deltaAngle = 0.0f;              ///< angleB - angleA at the step's start (in (-pi, pi]), rad
-  Rot2f qA, qB;                         ///< the bodies' rotations at the step's start
-  Vec2f localCenterA, localCenterB;     ///< centres of mass in the body frames, m (origin = c - rotate(q, localCenter))
-  Vec2f centerB;                        ///< B's centre of mass at the step's start, world, m (the mouse joint)
   Softness softness;                    ///< the rigid rows' stiffness (the joint's constraintHertz, or the world's)
   float maxSpeed = 0.0f;                ///< the world's speed cap, m/s (bounds the rows' impulses: maxRowImpulse)
   float maxSpin = 0.0f;                 ///< the spin cap, rad/s (a quarter turn a substep)
+};
+
+/// What a joint type's prepare may read of its bodies besides the frame: their poses at the
+/// step's start. Not kept: the passes of the substeps read only the frame.
+struct JointPose {
+  Rot2f qA, qB;                     ///< the bodies' rotations at the step's start
+  Vec2f localCenterA, localCenterB; ///< centres of mass in the body frames, m (origin = c - rotate(q, localCenter))
+  Vec2f centerB;                    ///< B's centre of mass at the step's start, world, m (the mouse joint)
 };
 
 /// The softness of a joint's rigid rows in a pass: its stiffness with bias, rigid in the relax pass.

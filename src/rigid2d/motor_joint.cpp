@@ -23,12 +23,12 @@
 
 namespace impetus::rigid2d::detail {
 
-void prepareJoint(MotorJoint& joint, const JointFrame& frame, const StepContext&) {
-  const MotorJointDef& def = joint.def;
+void prepareJoint(MotorJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext&) {
+  const MotorJointSettings& def = joint.def;
   // The origins relative to the centres of mass, world axes: origin - c = -R(q) localCenter.
-  const Vec2f originA = -rotate(frame.qA, frame.localCenterA);
-  joint.originB = -rotate(frame.qB, frame.localCenterB);
-  joint.targetA = originA + rotate(frame.qA, def.linearOffset);
+  const Vec2f originA = -rotate(pose.qA, pose.localCenterA);
+  joint.originB = -rotate(pose.qB, pose.localCenterB);
+  joint.targetA = originA + rotate(pose.qA, def.linearOffset);
   joint.angleError = unwindAngle(frame.deltaAngle - def.angularOffset);
 }
 
@@ -43,7 +43,7 @@ void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<Body
 void solveJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
-    const MotorJointDef& def = joint.def;
+    const MotorJointSettings& def = joint.def;
     const float rate = def.correctionFactor * context.inverseH; // 1/s: fraction of the error closed per second
 
     // Angular drive first (the linear one, with the larger effect on the motion, last).

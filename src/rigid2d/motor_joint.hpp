@@ -8,9 +8,9 @@ namespace impetus::rigid2d::detail {
 
 /// A point part of bounded magnitude (the linear drive) and a motor part on the angle.
 struct MotorJoint {
-  MotorJointDef def; ///< the settings (the offsets change at run time; the anchors are not used)
-  PointPart linear;  ///< N s per substep, on B (at B's origin)
-  MotorPart angular; ///< N m s per substep, on B
+  MotorJointSettings def; ///< the settings (the offsets change at run time; the anchors are not used)
+  PointPart linear;       ///< N s per substep, on B (at B's origin)
+  MotorPart angular;      ///< N m s per substep, on B
   /// From A's centre of mass to the target point (A's origin + linearOffset, a point fixed in
   /// A), world axes at the step's start, m.
   Vec2f targetA;
@@ -20,7 +20,7 @@ struct MotorJoint {
   float angleError = 0.0f;
 };
 
-void prepareJoint(MotorJoint& joint, const JointFrame& frame, const StepContext& context);
+void prepareJoint(MotorJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context);
 /// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);

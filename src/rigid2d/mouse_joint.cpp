@@ -17,8 +17,8 @@
 
 namespace impetus::rigid2d::detail {
 
-void prepareJoint(MouseJoint& joint, const JointFrame& frame, const StepContext& context) {
-  joint.targetOffset = frame.centerB - joint.def.target;
+void prepareJoint(MouseJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context) {
+  joint.targetOffset = pose.centerB - joint.def.target;
   joint.linearSoftness = makeSoft(joint.def.hertz, joint.def.dampingRatio, context.h);
   // The damper's implicit impulse over a substep: the accumulated impulse P must equal
   // -I rate h w_after, which solved for the change gives a soft constraint without bias, with

@@ -14,7 +14,7 @@ inline constexpr float mouseAngularDampingRate = 0.6f;
 
 /// A soft point part of bounded magnitude and a damping row part on the angle.
 struct MouseJoint {
-  MouseJointDef def;       ///< the settings (the target changes at run time; localAnchorA is not used)
+  MouseJointSettings def;  ///< the settings (the target changes at run time; localAnchorA is not used)
   PointPart linear;        ///< N s per substep, on B at its anchor
   RowPart angular;         ///< N m s per substep: the angular damping on B
   Vec2f targetOffset;      ///< B's centre of mass minus the target at the step's start, m
@@ -22,7 +22,7 @@ struct MouseJoint {
   Softness angularDamping; ///< the implicit angular damper (no bias)
 };
 
-void prepareJoint(MouseJoint& joint, const JointFrame& frame, const StepContext& context);
+void prepareJoint(MouseJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context);
 /// Applies the accumulated impulses of `rows` (the warm start: warmStartJoints).
 void warmStartJoint(MouseJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);

@@ -37,8 +37,9 @@ std::array<float, 2> blockError(const PrismaticJoint& joint, const JointFrame& f
 
 } // namespace
 
-void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const StepContext& context) {
-  joint.axisA = rotate(frame.qA, joint.def.localAxisA);
+void prepareJoint(PrismaticJoint& joint, const JointFrame& /*frame*/, const JointPose& pose,
+                  const StepContext& context) {
+  joint.axisA = rotate(pose.qA, joint.def.localAxisA);
   joint.solvedAxis = joint.axisA;
   joint.spring.prepare(joint.def.enableSpring ? joint.def.hertz : 0.0f, joint.def.dampingRatio, context.h);
   clearSwitchedOffImpulses(joint);
@@ -59,7 +60,7 @@ void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<
 void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
-    const PrismaticJointDef& def = joint.def;
+    const PrismaticJointSettings& def = joint.def;
     const SliderGeometry g = sliderGeometry(joint.axisA, frame, a, b);
     joint.solvedAxis = g.axis;
     const JointRow axial = g.axialRow();

@@ -8,9 +8,9 @@ namespace impetus::rigid2d::detail {
 
 /// A block part for the line and the angle; spring, motor and limit parts along the axis.
 struct PrismaticJoint {
-  PrismaticJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
-  BlockPart<2> block;    ///< across the axis (N s) and in angle (N m s), per substep
-  SpringPart spring;     ///< along the axis, N s per substep
+  PrismaticJointSettings def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  BlockPart<2> block;         ///< across the axis (N s) and in angle (N m s), per substep
+  SpringPart spring;          ///< along the axis, N s per substep
   MotorPart motor;
   LimitPart limit;
   Vec2f axisA; ///< the axis in world axes at the step's start
@@ -35,7 +35,7 @@ struct SliderGeometry {
 [[nodiscard]] SliderGeometry sliderGeometry(const Vec2f& axisAtStart, const JointFrame& f, const BodyState& a,
                                             const BodyState& b);
 
-void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const StepContext& context);
+void prepareJoint(PrismaticJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context);
 void warmStartJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(PrismaticJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

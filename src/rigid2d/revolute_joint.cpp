@@ -27,7 +27,8 @@ float axialImpulse(const RevoluteJoint& joint) {
 
 } // namespace
 
-void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepContext& context) {
+void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const JointPose& /*pose*/,
+                  const StepContext& context) {
   joint.angleAtStart = unwindAngle(frame.deltaAngle - joint.def.referenceAngle);
   joint.spring.prepare(joint.def.enableSpring ? joint.def.hertz : 0.0f, joint.def.dampingRatio, context.h);
   clearSwitchedOffImpulses(joint);
@@ -48,7 +49,7 @@ void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<B
 void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                 std::uint32_t staticIndex, const StepContext& context, bool useBias) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
-    const RevoluteJointDef& def = joint.def;
+    const RevoluteJointSettings& def = joint.def;
     const JointRow angle = angleRow();
     if (def.enableSpring) {
       joint.spring.solve(angle, frame, a, b, jointAngle(joint, a, b), useBias);

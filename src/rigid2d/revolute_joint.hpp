@@ -8,16 +8,16 @@ namespace impetus::rigid2d::detail {
 
 /// A point part for the pin; spring, motor, friction and limit parts on the angle.
 struct RevoluteJoint {
-  RevoluteJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
-  PointPart point;      ///< the pin, N s per substep
-  SpringPart spring;    ///< N m s per substep
+  RevoluteJointSettings def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  PointPart point;           ///< the pin, N s per substep
+  SpringPart spring;         ///< N m s per substep
   MotorPart motor;
   MotorPart friction;
   LimitPart limit;
   float angleAtStart = 0.0f; ///< the joint angle (angleB - angleA - referenceAngle) at the step's start, rad
 };
 
-void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const StepContext& context);
+void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context);
 void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

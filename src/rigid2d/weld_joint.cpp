@@ -13,7 +13,7 @@
 
 namespace impetus::rigid2d::detail {
 
-void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& context) {
+void prepareJoint(WeldJoint& joint, const JointFrame& frame, const JointPose& /*pose*/, const StepContext& context) {
   joint.startAngle = unwindAngle(frame.deltaAngle - joint.def.referenceAngle);
   joint.linearSoftness = makeSoft(joint.def.linearHertz, joint.def.linearDampingRatio, context.h);
   joint.angularSoftness = makeSoft(joint.def.angularHertz, joint.def.angularDampingRatio, context.h);
@@ -30,7 +30,7 @@ void warmStartJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyS
 void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& /*context*/, bool useBias) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
-    const WeldJointDef& def = joint.def;
+    const WeldJointSettings& def = joint.def;
     const float angleError = unwindAngle(joint.startAngle + relativeAngle(b.dq, a.dq));
     joint.angle.solve(angleRow(), frame, a, b, angleError,
                       def.angularHertz > 0.0f ? joint.angularSoftness : rigidRowSoftness(frame, useBias));

@@ -8,7 +8,7 @@ namespace impetus::rigid2d::detail {
 
 /// A row part on the angle and a point part.
 struct WeldJoint {
-  WeldJointDef def;        ///< the settings (anchors and axes as given)
+  WeldJointSettings def;   ///< the settings (anchors and axes as given)
   RowPart angle;           ///< N m s per substep
   PointPart point;         ///< N s per substep
   float startAngle = 0.0f; ///< the angle error at the step's start, angleB - angleA - referenceAngle, in (-pi, pi], rad
@@ -16,7 +16,7 @@ struct WeldJoint {
   Softness angularSoftness; ///< angularHertz's spring (unused when rigid)
 };
 
-void prepareJoint(WeldJoint& joint, const JointFrame& frame, const StepContext& context);
+void prepareJoint(WeldJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context);
 void warmStartJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,

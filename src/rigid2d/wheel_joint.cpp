@@ -9,8 +9,8 @@
 
 namespace impetus::rigid2d::detail {
 
-void prepareJoint(WheelJoint& joint, const JointFrame& frame, const StepContext& context) {
-  joint.axisA = rotate(frame.qA, joint.def.localAxisA);
+void prepareJoint(WheelJoint& joint, const JointFrame& /*frame*/, const JointPose& pose, const StepContext& context) {
+  joint.axisA = rotate(pose.qA, joint.def.localAxisA);
   joint.solvedAxis = joint.axisA;
   joint.spring.prepare(joint.def.enableSpring ? joint.def.hertz : 0.0f, joint.def.dampingRatio, context.h);
   clearSwitchedOffImpulses(joint);
@@ -31,7 +31,7 @@ void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<Body
 void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,
                 const StepContext& context, bool useBias) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
-    const WheelJointDef& def = joint.def;
+    const WheelJointSettings& def = joint.def;
     if (def.enableMotor) {
       joint.motor.solve(angleRow(), frame, a, b, def.motorSpeed, context.h * def.maxMotorTorque);
     }

@@ -9,9 +9,9 @@ namespace impetus::rigid2d::detail {
 
 /// A row part for the point on the line; spring and limit parts along it; a motor part on the spin.
 struct WheelJoint {
-  WheelJointDef def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
-  RowPart line;      ///< across the axis, N s per substep
-  SpringPart spring; ///< the suspension, along the axis
+  WheelJointSettings def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  RowPart line;           ///< across the axis, N s per substep
+  SpringPart spring;      ///< the suspension, along the axis
   LimitPart limit;
   MotorPart motor; ///< on the relative spin, N m s per substep
   Vec2f axisA;     ///< the axis in world axes at the step's start
@@ -20,7 +20,7 @@ struct WheelJoint {
   Vec2f solvedAxis;
 };
 
-void prepareJoint(WheelJoint& joint, const JointFrame& frame, const StepContext& context);
+void prepareJoint(WheelJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context);
 void warmStartJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
                     std::uint32_t staticIndex);
 void solveJoint(WheelJoint& joint, const JointFrame& frame, std::vector<BodyState>& states, std::uint32_t staticIndex,

@@ -283,9 +283,7 @@ FilterJointId World::createJoint(const FilterJointDef& def) {
   if (def.collideConnected) {
     throwInvalid("collideConnected", 1.0, "a filter joint only stops its bodies colliding: it must be false");
   }
-  detail::FilterJoint j;
-  j.def = def;
-  return {addJoint(*impl_, def, j)};
+  return {addJoint(*impl_, def, detail::FilterJoint{})};
 }
 
 void World::destroyJoint(JointId id) {

@@ -47,7 +47,8 @@ using MotorJointId = TypedJointId<JointType::motor>;
 using MouseJointId = TypedJointId<JointType::mouse>;
 using FilterJointId = TypedJointId<JointType::filter>;
 
-/// What every joint has.
+/// What every joint has. Each type's definition is this and the type's own settings
+/// (RevoluteJointSettings, ...), which its solver keeps; this part the world keeps apart.
 struct JointDefBase {
   BodyId bodyA;
   BodyId bodyB;
@@ -70,7 +71,7 @@ struct JointDefBase {
 /// A pin: the anchors stay together and the bodies turn freely about them, within optional
 /// limits, driven by an optional motor, pulled by an optional torsional spring, and slowed by
 /// joint friction (a torque of at most frictionTorque against the relative spin).
-struct RevoluteJointDef : JointDefBase {
+struct RevoluteJointSettings {
   float referenceAngle = 0.0f; ///< rad: angleB - angleA when the joint angle is zero
   bool enableLimit = false;
   float lowerAngle = 0.0f; ///< rad, in [-pi, pi] and <= upperAngle (the joint angle lives in (-pi, pi])
@@ -83,10 +84,11 @@ struct RevoluteJointDef : JointDefBase {
   float dampingRatio = 0.0f;   ///< of the spring
   float frictionTorque = 0.0f; ///< N m, >= 0: dry friction in the pin
 };
+struct RevoluteJointDef : JointDefBase, RevoluteJointSettings {};
 
 /// A slider: B moves relative to A along `localAxisA` (body A's frame) only, without turning
 /// relative to A; with limits on the translation, a motor and a spring.
-struct PrismaticJointDef : JointDefBase {
+struct PrismaticJointSettings {
   Vec2f localAxisA{1.0f, 0.0f}; ///< unit direction in A's frame (normalized on creation)
   float referenceAngle = 0.0f;  ///< rad
   bool enableLimit = false;
@@ -99,10 +101,11 @@ struct PrismaticJointDef : JointDefBase {
   float hertz = 0.0f;        ///< spring frequency, Hz (toward translation 0)
   float dampingRatio = 0.0f; ///< of the spring
 };
+struct PrismaticJointDef : JointDefBase, PrismaticJointSettings {};
 
 /// Keeps the anchors `length` apart, as a rod; or, with minLength < maxLength, lets the distance
 /// range between them (a rope: minLength 0); with a spring, pulls toward `length` softly.
-struct DistanceJointDef : JointDefBase {
+struct DistanceJointSettings {
   float length = 1.0f;                                      ///< m, > 0
   float minLength = 0.0f;                                   ///< m (used with enableLimit)
   float maxLength = std::numeric_limits<float>::infinity(); ///< m (used with enableLimit)
@@ -114,19 +117,21 @@ struct DistanceJointDef : JointDefBase {
   float motorSpeed = 0.0f;    ///< m/s, rate of change of the length
   float maxMotorForce = 0.0f; ///< N, >= 0
 };
+struct DistanceJointDef : JointDefBase, DistanceJointSettings {};
 
 /// Glues B to A at the anchors and relative angle; soft with linearHertz / angularHertz > 0.
-struct WeldJointDef : JointDefBase {
+struct WeldJointSettings {
   float referenceAngle = 0.0f; ///< rad
   float linearHertz = 0.0f;    ///< 0: rigid
   float linearDampingRatio = 0.0f;
   float angularHertz = 0.0f; ///< 0: rigid
   float angularDampingRatio = 0.0f;
 };
+struct WeldJointDef : JointDefBase, WeldJointSettings {};
 
 /// A vehicle wheel: B (the wheel) slides along `localAxisA` of A (the chassis) on a suspension
 /// spring and turns freely about its anchor, driven by an optional motor.
-struct WheelJointDef : JointDefBase {
+struct WheelJointSettings {
   Vec2f localAxisA{0.0f, 1.0f}; ///< suspension direction in A's frame (normalized on creation)
   bool enableSpring = true;
   float hertz = 1.0f;        ///< suspension frequency, Hz
@@ -138,26 +143,29 @@ struct WheelJointDef : JointDefBase {
   float motorSpeed = 0.0f;     ///< rad/s of the wheel relative to the chassis
   float maxMotorTorque = 0.0f; ///< N m, >= 0
 };
+struct WheelJointDef : JointDefBase, WheelJointSettings {};
 
 /// Drives B toward a target position and angle relative to A (`linearOffset` in A's frame, m;
 /// `angularOffset`, rad) with at most maxForce and maxTorque: for characters and top-down
 /// friction. The anchors are not used. correctionFactor is per substep.
-struct MotorJointDef : JointDefBase {
+struct MotorJointSettings {
   Vec2f linearOffset;            ///< m, B's origin relative to A's, in A's frame
   float angularOffset = 0.0f;    ///< rad, angleB - angleA
   float maxForce = 1.0f;         ///< N, >= 0
   float maxTorque = 1.0f;        ///< N m, >= 0
   float correctionFactor = 0.3f; ///< fraction of the position error closed per substep, 0 to 1
 };
+struct MotorJointDef : JointDefBase, MotorJointSettings {};
 
 /// Drags a point of B (localAnchorB) toward a world target with a soft spring of at most
 /// maxForce: a mouse or a finger. bodyA is ignored: B is pulled toward the world.
-struct MouseJointDef : JointDefBase {
+struct MouseJointSettings {
   Vec2f target;       ///< m, world
   float hertz = 5.0f; ///< Hz
   float dampingRatio = 0.7f;
   float maxForce = 1000.0f; ///< N, >= 0
 };
+struct MouseJointDef : JointDefBase, MouseJointSettings {};
 
 /// Only turns collision off between two bodies (Box2D v3's filter joint): no constraint, no
 /// force; the bodies sleep and wake together, like any joined pair. The anchors are not used;
