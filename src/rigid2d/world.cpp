@@ -62,7 +62,6 @@ using detail::Body;
 using detail::Contact;
 using detail::pairKey;
 using detail::Shape;
-using detail::shapeBox;
 using detail::shouldCollide;
 using detail::WorldState;
 
