@@ -25,7 +25,11 @@ struct ConstraintPoint {
   float maxNormalImpulse = 0.0f;
   float normalMass = 0.0f;
   float tangentMass = 0.0f;
-  float impactSpeed = 0.0f; ///< the fastest approach a bounce met this step (hit events), m/s
+  /// The point's fastest approach this step, m/s (positive approaching; hit events): its normal
+  /// approach before the step (what a hit reports, unaffected by the order the points are solved
+  /// in), or faster where a bounce met one within it (an impact passed along a row of touching
+  /// bodies).
+  float impactSpeed = 0.0f;
 };
 
 /// One contact: solved alone (the overflow), or copied into a lane of a wide batch.
@@ -98,7 +102,7 @@ struct ContactConstraint {
     p.tangentMass = kTangent > 0.0f ? 1.0f / kTangent : 0.0f;
     const Vec2f vA = stA.v + cross(stA.w, p.rA);
     const Vec2f vB = stB.v + cross(stB.w, p.rB);
-    contact.approachBefore[static_cast<std::size_t>(k)] = -dot(vB - vA, m.normal);
+    p.impactSpeed = -dot(vB - vA, m.normal);
   }
   return c;
 }
@@ -121,11 +125,8 @@ inline constexpr std::uint32_t noContact = ~std::uint32_t{0};
 /// Notes the fastest impact for hit events and keeps the impulses for the next warm start.
 [[gnu::always_inline]] static inline void storePoint(Contact& contact, int k, float normalImpulse, float tangentImpulse,
                                                      float maxNormalImpulse, float impactSpeed) {
-  // The approach before the step, or faster where a bounce met one within it (an impact passed
-  // along a row of touching bodies).
-  const float approach = std::max(contact.approachBefore[static_cast<std::size_t>(k)], impactSpeed);
-  if (maxNormalImpulse > 0.0f && approach > contact.approachSpeed) {
-    contact.approachSpeed = approach;
+  if (maxNormalImpulse > 0.0f && impactSpeed > contact.approachSpeed) {
+    contact.approachSpeed = impactSpeed;
     contact.fastestPoint = k;
   }
   ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(k)];

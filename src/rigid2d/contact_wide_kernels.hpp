@@ -109,7 +109,7 @@ struct BodiesW {
     lane(wp.maxNormalImpulse, i) = 0.0f;
     lane(wp.normalMass, i) = p.normalMass;
     lane(wp.tangentMass, i) = p.tangentMass;
-    lane(wp.impactSpeed, i) = 0.0f;
+    lane(wp.impactSpeed, i) = p.impactSpeed;
   }
 }
 

@@ -128,6 +128,12 @@ struct Contact {
   std::uint32_t shapeB = 0;
   std::uint32_t bodyA = 0; ///< body slots
   std::uint32_t bodyB = 0;
+  // The flags beside the slots, in the record's first cache line with them: the colouring reads
+  // only these and the manifold's point count of each of the awake set's contacts.
+  bool sensor = false;   ///< either shape is a sensor: events only, no response
+  bool preSolve = false; ///< either shape asks the pre-solve callback
+  bool reusable = false; ///< both shapes have sharp corners: the manifold may be carried (manifold_reuse.cpp)
+  bool alive = false;
   Manifold manifold;
   float friction = 0.0f;
   float restitution = 0.0f;
@@ -135,14 +141,7 @@ struct Contact {
   float rollingImpulse = 0.0f;    ///< solver state, N m s (warm start)
   float tangentSpeed = 0.0f;      ///< the surfaces' sliding speed friction drives toward, m/s
   float approachSpeed = 0.0f;     ///< the solver's fastest impact this step, m/s (for hit events)
-  /// Each point's normal approach speed before the step (m/s, positive approaching): what a hit
-  /// event reports, unaffected by the order the points are solved in.
-  std::array<float, 2> approachBefore{};
   int fastestPoint = 0;
-  bool sensor = false;   ///< either shape is a sensor: events only, no response
-  bool preSolve = false; ///< either shape asks the pre-solve callback
-  bool reusable = false; ///< both shapes have sharp corners: the manifold may be carried (manifold_reuse.cpp)
-  bool alive = false;
   ManifoldFrame frame; ///< cold: read by the collide pass only (after the solver's fields)
   /// The contact's place in each body's list of contacts (edge 0: bodyA's, 1: bodyB's), as edge
   /// keys of the neighbours (contactEdgeKey), noContactEdge at the ends.
