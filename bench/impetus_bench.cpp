@@ -60,8 +60,8 @@ struct EngineResult {
   float largestJointGap = 0.0f; ///< m, the widest gap between a joint's anchors (scenes with joints)
   std::size_t touchingContacts = 0;
   bool finite = true;
-  StepProfile
-      profile; ///< Impetus and Box2D v3: the mean of the steps' profiles (World::profile(), b2World_GetProfile), ms
+  /// Impetus and Box2D v3: the mean of the steps' profiles (World::profile(), b2World_GetProfile), ms.
+  StepProfile profile;
 };
 
 /// The profile's parts by name, in step order (World::profile()).

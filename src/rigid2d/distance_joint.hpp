@@ -9,7 +9,7 @@ namespace impetus::rigid2d::detail {
 /// On the row along the anchors' axis (positive pushes them apart): a row part (a rod) or a
 /// spring, motor and limit parts.
 struct DistanceJoint {
-  DistanceJointSettings def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  DistanceJointSettings def; ///< the type's settings (motor and limit settings change at run time)
   RowPart rod;               ///< the rigid length, N s per substep
   SpringPart spring;
   MotorPart motor;

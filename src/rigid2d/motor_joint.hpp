@@ -8,7 +8,7 @@ namespace impetus::rigid2d::detail {
 
 /// A point part of bounded magnitude (the linear drive) and a motor part on the angle.
 struct MotorJoint {
-  MotorJointSettings def; ///< the settings (the offsets change at run time; the anchors are not used)
+  MotorJointSettings def; ///< the type's settings (the offsets change at run time)
   PointPart linear;       ///< N s per substep, on B (at B's origin)
   MotorPart angular;      ///< N m s per substep, on B
   /// From A's centre of mass to the target point (A's origin + linearOffset, a point fixed in

@@ -14,7 +14,7 @@ inline constexpr float mouseAngularDampingRate = 0.6f;
 
 /// A soft point part of bounded magnitude and a damping row part on the angle.
 struct MouseJoint {
-  MouseJointSettings def;  ///< the settings (the target changes at run time; localAnchorA is not used)
+  MouseJointSettings def;  ///< the type's settings (the target changes at run time)
   PointPart linear;        ///< N s per substep, on B at its anchor
   RowPart angular;         ///< N m s per substep: the angular damping on B
   Vec2f targetOffset;      ///< B's centre of mass minus the target at the step's start, m

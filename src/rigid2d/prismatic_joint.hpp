@@ -8,7 +8,7 @@ namespace impetus::rigid2d::detail {
 
 /// A block part for the line and the angle; spring, motor and limit parts along the axis.
 struct PrismaticJoint {
-  PrismaticJointSettings def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  PrismaticJointSettings def; ///< the type's settings (axes as given; motor and limit settings change at run time)
   BlockPart<2> block;         ///< across the axis (N s) and in angle (N m s), per substep
   SpringPart spring;          ///< along the axis, N s per substep
   MotorPart motor;

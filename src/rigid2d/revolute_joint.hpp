@@ -8,7 +8,7 @@ namespace impetus::rigid2d::detail {
 
 /// A point part for the pin; spring, motor, friction and limit parts on the angle.
 struct RevoluteJoint {
-  RevoluteJointSettings def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  RevoluteJointSettings def; ///< the type's settings (motor and limit settings change at run time)
   PointPart point;           ///< the pin, N s per substep
   SpringPart spring;         ///< N m s per substep
   MotorPart motor;

@@ -8,7 +8,7 @@ namespace impetus::rigid2d::detail {
 
 /// A row part on the angle and a point part.
 struct WeldJoint {
-  WeldJointSettings def;   ///< the settings (anchors and axes as given)
+  WeldJointSettings def;   ///< the type's settings
   RowPart angle;           ///< N m s per substep
   PointPart point;         ///< N s per substep
   float startAngle = 0.0f; ///< the angle error at the step's start, angleB - angleA - referenceAngle, in (-pi, pi], rad

@@ -9,7 +9,7 @@ namespace impetus::rigid2d::detail {
 
 /// A row part for the point on the line; spring and limit parts along it; a motor part on the spin.
 struct WheelJoint {
-  WheelJointSettings def; ///< the settings (anchors and axes as given; motor and limit settings change at run time)
+  WheelJointSettings def; ///< the type's settings (axes as given; motor and limit settings change at run time)
   RowPart line;           ///< across the axis, N s per substep
   SpringPart spring;      ///< the suspension, along the axis
   LimitPart limit;
