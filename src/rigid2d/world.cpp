@@ -292,7 +292,7 @@ constexpr std::uint32_t collidePrefetchDistance = 8;
 
 /// Asks the cache for all of a contact's bytes. Always inlined: GCC 12 finds a function of
 /// nothing but prefetches free of side effects and deletes its calls.
-[[gnu::always_inline]] inline void prefetchContact(const WorldState&, const Contact& contact) {
+[[gnu::always_inline]] inline void prefetchContact(const Contact& contact) {
   const auto* bytes = reinterpret_cast<const char*>(&contact);
   for (std::size_t offset = 0; offset < sizeof(Contact); offset += 64) {
     __builtin_prefetch(bytes + offset);
@@ -326,7 +326,7 @@ void collideContacts(WorldState& w) {
   w.parallelFor(count, 64, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t k = begin; k < end; ++k) {
       if (k + collidePrefetchDistance < end) {
-        prefetchContact(w, w.contacts[awakeContacts[k + collidePrefetchDistance]]);
+        prefetchContact(w.contacts[awakeContacts[k + collidePrefetchDistance]]);
       }
       if (k + collidePrefetchDistance / 2 < end) {
         prefetchContactBodies(w, w.contacts[awakeContacts[k + collidePrefetchDistance / 2]]);
