@@ -9,6 +9,7 @@
 #include <impetus/rigid2d/constants.hpp>
 
 #include <cmath>
+#include <cstddef>
 
 namespace impetus::rigid2d::detail {
 
@@ -76,6 +77,31 @@ void finishBody(const WorldState& w, Body& b, const BodyState& s, float dt) {
 /// with a continuous sweep), so a smaller task costs more to hand out than it does.
 constexpr std::uint32_t minFinishBodiesPerTask = 128;
 
+/// How many bodies ahead the finalize asks the cache for a body's record; its shape list is
+/// asked for two thirds as far ahead and its shapes one third (each read through the one before,
+/// by then in the cache). A body's shapes are a chain of dependent loads (body, its list of
+/// slots, each shape) far apart in memory: too sparse for the hardware to follow.
+constexpr std::uint32_t finishPrefetchDistance = 12;
+
+/// Asks the cache for a body's record.
+[[gnu::always_inline]] inline void prefetchBody(const Body& b) {
+  const auto* bytes = reinterpret_cast<const char*>(&b);
+  for (std::size_t offset = 0; offset < sizeof(Body); offset += 64) {
+    __builtin_prefetch(bytes + offset);
+  }
+}
+
+/// Asks the cache for the lines of a body's shapes that growFatBoxes reads (a polygon's first
+/// vertices and, after the geometry, its count, radius and fat-box fields), and their fat boxes.
+[[gnu::always_inline]] inline void prefetchShapes(const WorldState& w, const Body& b) {
+  for (const std::uint32_t slot : b.shapes) {
+    const auto* bytes = reinterpret_cast<const char*>(&w.shapes[slot]);
+    __builtin_prefetch(bytes);
+    __builtin_prefetch(bytes + offsetof(Shape, margin));
+    __builtin_prefetch(&w.fatBoxes[slot]);
+  }
+}
+
 /// What the finalize's serial pass does with a body the parallel pass finished.
 enum FinishMark : std::uint8_t { finishedInPlace = 0, fatBoxesGrew = 1, bulletToSweep = 2 };
 
@@ -92,6 +118,15 @@ void finalizeBodies(WorldState& w, float dt) {
   w.finishMarks.resize(count);
   w.parallelFor(count, minFinishBodiesPerTask, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t i = begin; i < end; ++i) {
+      if (i + finishPrefetchDistance < end) {
+        prefetchBody(w.bodies[w.awakeBodies[i + finishPrefetchDistance]]);
+      }
+      if (i + 2 * finishPrefetchDistance / 3 < end) {
+        __builtin_prefetch(w.bodies[w.awakeBodies[i + 2 * finishPrefetchDistance / 3]].shapes.data());
+      }
+      if (i + finishPrefetchDistance / 3 < end) {
+        prefetchShapes(w, w.bodies[w.awakeBodies[i + finishPrefetchDistance / 3]]);
+      }
       Body& b = w.bodies[w.awakeBodies[i]];
       if (b.bullet && b.type == BodyType::dynamicBody) {
         w.finishMarks[i] = bulletToSweep; // finished serially, where its start is recorded

@@ -43,6 +43,11 @@ using Geometry = ShapeGeometry;
 
 struct Shape {
   Geometry geometry;
+  // What the finalize reads beside the geometry, next to it (the variant's index ends it).
+  std::int32_t proxy = DynamicTree::nullNode;
+  float margin = 0.0f;       ///< how far a moving shape's fat box reaches past its box, m (fatBoxMargin)
+  bool inStaticTree = false; ///< which broadphase tree holds the proxy (fat box: WorldState::fatBoxes)
+  bool fatBoxGrown = false;  ///< the finalize gave it a new fat box that its tree does not hold yet
   /// The narrowphase's view of a capsule, segment or polygon (circles have none): made once
   /// when the shape is created, so collision never converts or copies it in the step.
   Polygon collisionPolygon;
@@ -59,10 +64,6 @@ struct Shape {
   bool preSolve = false;        ///< ShapeDef::enablePreSolveEvents
   bool sensor = false;
   std::uint64_t userData = 0;
-  std::int32_t proxy = DynamicTree::nullNode;
-  float margin = 0.0f;       ///< how far a moving shape's fat box reaches past its box, m (fatBoxMargin)
-  bool inStaticTree = false; ///< which broadphase tree holds the proxy (fat box: WorldState::fatBoxes)
-  bool fatBoxGrown = false;  ///< the finalize gave it a new fat box that its tree does not hold yet
   ShapeId id;
   bool alive = false;
 };
