@@ -83,9 +83,16 @@ struct ContactConstraint {
   const Vec2f offsetB = b.centerOffset;
   const BodyState& stA = w.states[c.indexA];
   const BodyState& stB = w.states[c.indexB];
-  for (int k = 0; k < m.pointCount; ++k) {
-    const ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
+  // Every field of both points is written (a missing point's are zero), so that the record is
+  // built without first being cleared.
+  for (int k = 0; k < 2; ++k) {
     ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+    if (k >= m.pointCount) {
+      p = ConstraintPoint{};
+      continue;
+    }
+    const ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
+    p.maxNormalImpulse = 0.0f;
     p.rA = mp.anchorA - offsetA;
     p.rB = mp.anchorB - offsetB;
     p.adjustedSeparation = mp.separation - dot(p.rB - p.rA, m.normal);
