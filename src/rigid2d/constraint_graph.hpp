@@ -47,12 +47,13 @@ struct ContactSolverData {
   /// from step to step while the joints and moving bodies they were coloured for stay the same.
   std::vector<JointSim> jointSims;
   std::array<std::uint32_t, colourCount + 1> jointColourStart{};
-  std::vector<std::uint32_t> simOfJoint;       ///< by joint slot: its index in jointSims, or noJointSim
-  std::vector<std::uint32_t> colouredJoints;   ///< the solvedJoints the joint colours were made for
-  std::vector<std::uint32_t> colouredBodies;   ///< ... and the awakeBodies
-  std::vector<std::uint32_t> jointBodyColours; ///< per solver body: the joints' colours (bodyColours' start)
-  std::vector<std::uint32_t> breakableJoints;  ///< slots, in slot order, of the copies' joints with break limits
-  bool jointColoursValid = false;              ///< the copies match colouredJoints (no joint destroyed since)
+  std::vector<std::uint32_t> simOfJoint;          ///< by joint slot: its index in jointSims, or noJointSim
+  std::vector<std::uint32_t> colouredJoints;      ///< the solvedJoints the joint colours were made for
+  std::vector<std::uint32_t> colouredBodies;      ///< ... and the awakeBodies
+  std::vector<std::uint32_t> colouredAwakeJoints; ///< ... and the awake joint set they were collected from
+  std::vector<std::uint32_t> jointBodyColours;    ///< per solver body: the joints' colours (bodyColours' start)
+  std::vector<std::uint32_t> breakableJoints;     ///< slots, in slot order, of the copies' joints with break limits
+  bool jointColoursValid = false;                 ///< the copies match colouredJoints (no joint destroyed since)
   Softness soft, staticSoft;
   float pushSpeed = 0.0f;
   float restitutionThreshold = 0.0f;

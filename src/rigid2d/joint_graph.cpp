@@ -182,6 +182,7 @@ void dropJointSims(WorldState& w) {
   std::fill(d.simOfJoint.begin(), d.simOfJoint.end(), noJointSim);
   d.colouredJoints.clear();
   d.colouredBodies.clear();
+  d.colouredAwakeJoints.clear();
   d.jointColoursValid = false;
 }
 
