@@ -90,7 +90,8 @@ inline int findColour(ContactSolverData& d, std::uint32_t a, std::uint32_t b, st
 /// microsecond).
 inline constexpr std::uint32_t minJointsPerTask = 64;
 
-/// Colours this step's joints before the contacts and makes (or keeps) their solver copies.
+/// Collects and colours this step's joints before the contacts and makes (or keeps) their solver
+/// copies.
 void colourJoints(WorldState& w, ContactSolverData& d);
 /// Each joint copy's frame for this step and its type's prepare, on threads.
 void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& context);

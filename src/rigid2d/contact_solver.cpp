@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <array>
-#include <span>
 
 namespace impetus::rigid2d::detail {
 
@@ -266,16 +265,6 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
 
   // Colour the joints, then the awake set's touching contacts, in slot order.
   const std::uint32_t staticIndex = w.staticIndex();
-  // This step's joints are the last step's while the awake joints and the moving bodies are the
-  // same (a joint's bodies never change; destroying one makes the colours invalid): the joints'
-  // records are not read to find them.
-  w.awakeJointSet.compact();
-  const std::span<const std::uint32_t> awakeJoints = w.awakeJointSet.items();
-  if (!d.jointColoursValid || d.colouredBodies != w.awakeBodies ||
-      !std::equal(awakeJoints.begin(), awakeJoints.end(), d.colouredAwakeJoints.begin(), d.colouredAwakeJoints.end())) {
-    collectSolvedJoints(w);
-    d.colouredAwakeJoints.assign(awakeJoints.begin(), awakeJoints.end());
-  }
   d.bodyColours.assign(staticIndex, 0);
   colourJoints(w, d);
   prepareJointSims(w, d, context);

@@ -5,17 +5,29 @@
 #include "rigid2d/constraint_graph.hpp"
 
 #include <algorithm>
+#include <span>
 
 namespace impetus::rigid2d::detail {
 
-/// Colours this step's joints (WorldState::solvedJoints) in the graph, before the contacts (joints
-/// hold structures together: a colour of their own is worth more to them), and makes their
-/// solver copies in colour order. A joint with no rows (a filter joint) takes none. Done again
-/// only when the joints or the moving bodies changed (the same colouring would come out);
-/// otherwise the copies, impulses and settings in them, stay where they are.
+/// Collects this step's joints (WorldState::solvedJoints) and colours them in the graph, before
+/// the contacts (joints hold structures together: a colour of their own is worth more to them),
+/// and makes their solver copies in colour order. A joint with no rows (a filter joint) takes
+/// none. Done again only when the joints or the moving bodies changed (the same colouring would
+/// come out); otherwise the copies, impulses and settings in them, stay where they are.
 void colourJoints(WorldState& w, ContactSolverData& d) {
   const std::uint32_t staticIndex = w.staticIndex();
-  if (d.jointColoursValid && d.colouredJoints == w.solvedJoints && d.colouredBodies == w.awakeBodies) {
+  // The joints to solve are last step's while the awake joint set and the moving bodies are (a
+  // joint's bodies never change, and destroying one makes the colours invalid): then the
+  // joints' records are not read to collect them again.
+  w.awakeJointSet.compact();
+  const std::span<const std::uint32_t> awakeJoints = w.awakeJointSet.items();
+  const bool sameBodies = d.jointColoursValid && d.colouredBodies == w.awakeBodies;
+  if (!sameBodies ||
+      !std::equal(awakeJoints.begin(), awakeJoints.end(), d.colouredAwakeJoints.begin(), d.colouredAwakeJoints.end())) {
+    collectSolvedJoints(w);
+    d.colouredAwakeJoints.assign(awakeJoints.begin(), awakeJoints.end());
+  }
+  if (sameBodies && d.colouredJoints == w.solvedJoints) {
     d.bodyColours = d.jointBodyColours;
     return;
   }
