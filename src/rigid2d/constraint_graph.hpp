@@ -1,10 +1,14 @@
-// The soft step's constraint graph (contact_solver.cpp, joint_graph.cpp): the joints, then the
-// touching contacts, in colours such that no two constraints of a colour share a moving body
-// (static bodies do not count: nothing writes them), with an overflow for what finds no colour.
+// The soft step's constraint graph (contact_solver.cpp, joint_graph.cpp): the joints and the
+// touching contacts in colours such that no two joints, or two contacts, of a colour share a
+// moving body (static bodies do not count: nothing writes them), with an overflow for what finds
+// no colour. The contacts keep their colours from step to step (WorldState::contactGraph); the
+// joints are coloured again when they or the moving bodies change. A colour's joints are solved
+// before its contacts, so a joint and a contact of one colour may share a body.
 #pragma once
 
 #include "rigid2d/contact_constraint.hpp"
 #include "rigid2d/joints.hpp"
+#include "solver/colour_graph.hpp"
 
 #include <array>
 #include <bit>
@@ -14,14 +18,12 @@
 
 namespace impetus::rigid2d::detail {
 
-inline constexpr int colourCount = 24;
+inline constexpr int colourCount = static_cast<int>(solver::graphColourCount);
 /// A joint without a solver copy, in ContactSolverData::simOfJoint.
 inline constexpr std::uint32_t noJointSim = ~std::uint32_t{0};
-/// Contacts between two moving bodies use colours [0, dynamicColourCount); contacts with a static
-/// body, which take up one body only, may use any colour, so the last ones stay free for them.
-/// (Box2D v3 keeps static contacts out of colour 0; here that delayed the ground's support of a
-/// stack by a colour each substep and let a 10-box stack sway 2 cm, against 0.5 cm.)
-inline constexpr int dynamicColourCount = colourCount - 4;
+/// Joints between two moving bodies use colours [0, dynamicColourCount); joints with a static
+/// body may use any colour (as contacts: solver::graphStaticColourCount).
+inline constexpr int dynamicColourCount = colourCount - static_cast<int>(solver::graphStaticColourCount);
 inline constexpr std::uint32_t allColours = (std::uint32_t{1} << colourCount) - 1;
 inline constexpr std::uint32_t dynamicColours = (std::uint32_t{1} << dynamicColourCount) - 1;
 static_assert(colourCount < 32);
@@ -39,8 +41,7 @@ struct ContactSolverData {
   std::vector<std::uint32_t> slots;                         ///< contact slot per lane (or ~0), width per batch
   std::array<std::uint32_t, colourCount + 1> colourStart{}; ///< first batch of each colour
   std::vector<ContactConstraint> overflow;
-  std::vector<std::uint32_t> bodyColours; ///< per solver body: bit c set when colour c holds it
-  std::array<std::vector<std::uint32_t>, colourCount> colourContacts;
+  std::vector<std::uint32_t> bodyColours; ///< per solver body: bit c set when a joint of colour c holds it
   std::array<std::vector<std::uint32_t>, colourCount> colourJoints; ///< joint slots, in slot order
   std::vector<std::uint32_t> overflowJoints;
   /// The joints solved this step: the overflow's, then colour by colour (jointColourStart). Kept
@@ -51,7 +52,6 @@ struct ContactSolverData {
   std::vector<std::uint32_t> colouredJoints;      ///< the solvedJoints the joint colours were made for
   std::vector<std::uint32_t> colouredBodies;      ///< ... and the awakeBodies
   std::vector<std::uint32_t> colouredAwakeJoints; ///< ... and the awake joint set they were collected from
-  std::vector<std::uint32_t> jointBodyColours;    ///< per solver body: the joints' colours (bodyColours' start)
   std::vector<std::uint32_t> breakableJoints;     ///< slots, in slot order, of the copies' joints with break limits
   bool jointColoursValid = false;                 ///< the copies match colouredJoints (no joint destroyed since)
   Softness soft, staticSoft;

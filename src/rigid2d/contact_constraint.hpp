@@ -60,6 +60,7 @@ struct ContactConstraint {
   const SolverBodyInfo& a = w.bodyInfo[contact.bodyA];
   const SolverBodyInfo& b = w.bodyInfo[contact.bodyB];
   const Manifold& m = contact.manifold;
+  contact.approachSpeed = 0.0f; // the store notes this step's fastest impact
   ContactConstraint c;
   c.indexA = w.solverIndexOf(a);
   c.indexB = w.solverIndexOf(b);

@@ -2,21 +2,24 @@
 // Box2D v3): soft contacts with a stiffness in hertz, warm starting, a relax pass, restitution
 // as impacts within the passes, Coulomb friction and rolling resistance.
 //
-// Layout: the constraint graph (constraint_graph.hpp). The joints keep their colours while the
-// joints and moving bodies stay the same (joint_graph.cpp); the touching contacts are coloured
-// after them each step. A colour's joints are solved on several threads, then its contacts. A
+// Layout: the constraint graph (constraint_graph.hpp). The touching contacts keep their colours
+// from step to step (solver::ColourGraph); the joints keep theirs while the joints and moving
+// bodies stay the same (joint_graph.cpp). A colour's joints are solved on several threads, then
+// its contacts. A
 // colour's contacts are independent: they are solved several at a time in SIMD lanes
 // (contact_wide_kernels.hpp: eight with AVX2 where the CPU has it, four with SSE2) and their
 // batches may run on several threads, with results that depend on neither. Contacts that find
 // no free colour (a body touching very many others) go to a small overflow list solved one by
-// one first. Within a colour, contacts keep their pool order, so the whole solve has a fixed
-// order and is bit-identical run after run.
+// one first, in the order they went there. The colours depend only on the order in which
+// contacts began and ended, which the collide pass fixes, so the solve is bit-identical run
+// after run.
 #include "rigid2d/constraint_graph.hpp"
 
 #include <impetus/math/scalar.hpp>
 
 #include <algorithm>
 #include <array>
+#include <span>
 
 namespace impetus::rigid2d::detail {
 
@@ -263,47 +266,28 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
   d.pushSpeed = w.def.maxContactPushSpeed;
   d.restitutionThreshold = w.def.restitutionThreshold;
 
-  // Colour the joints, then the awake set's touching contacts, in slot order.
-  const std::uint32_t staticIndex = w.staticIndex();
-  d.bodyColours.assign(staticIndex, 0);
+  // The joints are coloured here (joint_graph.cpp); the contacts have their colours already
+  // (WorldState::contactGraph). The overflow's contacts are solved from copies.
   colourJoints(w, d);
   prepareJointSims(w, d, context);
-  for (std::vector<std::uint32_t>& list : d.colourContacts) {
-    list.clear();
-  }
+  const solver::ColourGraph& graph = w.contactGraph;
   d.overflow.clear();
-  for (const std::uint32_t slot : w.awakeContactSet.items()) {
-    Contact& contact = w.contacts[slot];
-    if (contact.sensor || contact.manifold.pointCount == 0) {
-      continue;
-    }
-    const std::uint32_t ia = w.solverIndexOf(w.bodyInfo[contact.bodyA]);
-    const std::uint32_t ib = w.solverIndexOf(w.bodyInfo[contact.bodyB]);
-    if (ia == staticIndex && ib == staticIndex) {
-      continue; // asleep (the world wakes a sleeper touched by a moving body before the solve)
-    }
-    contact.approachSpeed = 0.0f;
-    const bool withStatic = ia == staticIndex || ib == staticIndex;
-    const int colour = findColour(d, ia, ib, staticIndex, withStatic ? allColours : dynamicColours);
-    if (colour < 0) {
-      d.overflow.push_back(makeContactConstraint(w, contact, slot, d.soft, d.staticSoft));
-    } else {
-      d.colourContacts[static_cast<std::size_t>(colour)].push_back(slot);
-    }
+  for (const std::uint32_t slot : graph.members(solver::ColourGraph::overflow)) {
+    d.overflow.push_back(makeContactConstraint(w, w.contacts[slot], slot, d.soft, d.staticSoft));
   }
   // Batches of `width` per colour.
   const auto width = static_cast<std::uint32_t>(kernels.width);
   std::uint32_t batches = 0;
   for (std::size_t c = 0; c < colourCount; ++c) {
     d.colourStart[c] = batches;
-    batches += static_cast<std::uint32_t>((d.colourContacts[c].size() + width - 1) / width);
+    batches += static_cast<std::uint32_t>((graph.members(static_cast<std::uint32_t>(c)).size() + width - 1) / width);
   }
   d.colourStart[colourCount] = batches;
   d.wide.resize(batches * kernels.batchBytes / sizeof(WideBlock) + 1);
   d.slots.resize(std::size_t{batches} * width);
   // The batches' contact slots, colour after colour (noContact fills a colour's last batch) ...
   for (std::size_t colour = 0; colour < colourCount; ++colour) {
-    const std::vector<std::uint32_t>& list = d.colourContacts[colour];
+    const std::span<const std::uint32_t> list = graph.members(static_cast<std::uint32_t>(colour));
     // By pointer, not by index: an empty colour's start may be the end of the slots.
     std::uint32_t* slots = d.slots.data() + std::size_t{d.colourStart[colour]} * width;
     const std::size_t filled = std::size_t{d.colourStart[colour + 1] - d.colourStart[colour]} * width;
@@ -401,10 +385,10 @@ ConstraintGraphCounts constraintGraph(const WorldState& w) {
   const ContactSolverData& d = *w.contactSolver;
   for (std::size_t c = 0; c < colourCount; ++c) {
     counts.colourJoints[c] = static_cast<std::uint32_t>(d.colourJoints[c].size());
-    counts.colourContacts[c] = static_cast<std::uint32_t>(d.colourContacts[c].size());
+    counts.colourContacts[c] = static_cast<std::uint32_t>(w.contactGraph.members(static_cast<std::uint32_t>(c)).size());
   }
   counts.overflowJoints = static_cast<std::uint32_t>(d.overflowJoints.size());
-  counts.overflowContacts = static_cast<std::uint32_t>(d.overflow.size());
+  counts.overflowContacts = static_cast<std::uint32_t>(w.contactGraph.members(solver::ColourGraph::overflow).size());
   return counts;
 }
 

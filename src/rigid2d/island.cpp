@@ -10,6 +10,19 @@
 
 namespace impetus::rigid2d::detail {
 
+void updateContactColour(WorldState& w, std::uint32_t slot) {
+  const Contact& c = w.contacts[slot];
+  const bool solved = solvedByStep(w, c);
+  if (solved == w.contactGraph.contains(slot)) {
+    return;
+  }
+  if (solved) {
+    w.contactGraph.add(slot, graphBodyOf(w, c.bodyA), graphBodyOf(w, c.bodyB));
+  } else {
+    w.contactGraph.remove(slot);
+  }
+}
+
 void wakeIsland(WorldState& w, std::uint32_t island) {
   for (const std::uint32_t slot : w.islands.bodies(island)) {
     Body& b = w.bodies[slot];
@@ -24,6 +37,7 @@ void wakeIsland(WorldState& w, std::uint32_t island) {
     }
     for (std::uint32_t key = w.bodies[slot].contactHead; key != noContactEdge;) {
       w.awakeContactSet.add(key >> 1);
+      updateContactColour(w, key >> 1);
       key = w.contacts[key >> 1].next[key & 1U];
     }
   }
@@ -61,6 +75,7 @@ void sleepIsland(WorldState& w, std::uint32_t island) {
       const Contact& c = w.contacts[key >> 1];
       if (!w.bodies[c.bodyA].moving() && !w.bodies[c.bodyB].moving()) {
         w.awakeContactSet.remove(key >> 1);
+        w.contactGraph.remove(key >> 1);
       }
       key = c.next[key & 1U];
     }

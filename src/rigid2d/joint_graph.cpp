@@ -28,10 +28,10 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
     d.colouredAwakeJoints.assign(awakeJoints.begin(), awakeJoints.end());
   }
   if (sameBodies && d.colouredJoints == w.solvedJoints) {
-    d.bodyColours = d.jointBodyColours;
     return;
   }
   returnJointSims(w);
+  d.bodyColours.assign(staticIndex, 0);
   for (std::vector<std::uint32_t>& list : d.colourJoints) {
     list.clear();
   }
@@ -84,7 +84,6 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
   }
   d.colouredJoints.assign(w.solvedJoints.begin(), w.solvedJoints.end());
   d.colouredBodies.assign(w.awakeBodies.begin(), w.awakeBodies.end());
-  d.jointBodyColours = d.bodyColours;
   d.jointColoursValid = true;
 }
 

@@ -17,6 +17,8 @@
 #include <impetus/error.hpp>
 
 #include <cstring>
+#include <span>
+#include <string>
 #include <type_traits>
 
 namespace impetus::rigid2d {
@@ -29,7 +31,7 @@ using detail::Shape;
 using detail::WorldState;
 
 constexpr std::uint32_t snapshotMagic = 0x53443249; // "I2DS"
-constexpr std::uint32_t snapshotVersion = 5;
+constexpr std::uint32_t snapshotVersion = 6;
 
 static_assert(std::is_trivially_copyable_v<Contact>);
 static_assert(std::is_trivially_copyable_v<Joint>);
@@ -146,6 +148,21 @@ void getList(Reader& in, std::vector<std::uint32_t>& list, std::size_t bound) {
   }
 }
 
+/// Puts a restored contact back in the constraint graph where saveState found it: a contact the
+/// step solves, in a colour free for its bodies, every such contact in one.
+void restoreContactColour(WorldState& w, std::uint32_t slot, solver::ColourGraph::Place at) {
+  const Contact& c = w.contacts[slot];
+  const bool solved = c.bodyA < w.bodies.size() && c.bodyB < w.bodies.size() && detail::solvedByStep(w, c);
+  const bool placed =
+      at.colour == solver::ColourGraph::absent
+          ? !solved
+          : solved && w.contactGraph.restore(slot, detail::graphBodyOf(w, c.bodyA), detail::graphBodyOf(w, c.bodyB), at,
+                                             static_cast<std::uint32_t>(w.contacts.size()));
+  if (!placed) {
+    throw Error("snapshot", "snapshot: contact " + std::to_string(slot) + " out of place in the constraint graph");
+  }
+}
+
 } // namespace
 
 void World::saveState(WorldSnapshot& out) const {
@@ -179,6 +196,8 @@ void World::saveState(WorldSnapshot& out) const {
     put.put(c.alive);
     if (c.alive) {
       put.put(c);
+      // Its colour: what the solve gives depends on it, and it on the timeline.
+      put.put(w.contactGraph.placeOf(static_cast<std::uint32_t>(&c - w.contacts.data())));
     }
   }
   putList(put, w.freeContacts);
@@ -237,12 +256,17 @@ void World::restoreState(const WorldSnapshot& snapshot) {
   const auto contactSlots = in.get<std::uint32_t>();
   w.contacts.assign(contactSlots, Contact{});
   w.contactByPair.clear();
+  w.contactGraph.clear();
   for (std::uint32_t slot = 0; slot < contactSlots; ++slot) {
     if (in.get<bool>()) {
-      const Contact c = in.get<Contact>();
+      const auto c = in.get<Contact>();
       w.contacts[slot] = c;
       w.contactByPair.insert(detail::pairKey(c.shapeA, c.shapeB), slot);
+      restoreContactColour(w, slot, in.get<solver::ColourGraph::Place>());
     }
+  }
+  if (!w.contactGraph.whole()) {
+    throw Error("snapshot", "snapshot: a colour of the constraint graph has a hole");
   }
   getList(in, w.freeContacts, contactSlots);
   // The bodies' contact lists must stay inside the contacts restored (a snapshot of this world

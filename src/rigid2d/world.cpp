@@ -406,6 +406,7 @@ void collideContacts(WorldState& w) {
       detail::destroyContact(w, slot, w.contactEvents, w.sensorEvents);
       continue;
     }
+    detail::updateContactColour(w, slot);
     if (change != unchanged && detail::joinsIslands(w, c)) {
       if (change == began) {
         w.islands.link(c.bodyA, c.bodyB);
@@ -554,6 +555,7 @@ void destroyContact(WorldState& w, std::uint32_t slot, ContactEvents& events, Se
     w.islands.unlink(c.bodyA, c.bodyB);
   }
   w.awakeContactSet.remove(slot);
+  w.contactGraph.remove(slot);
   w.contactByPair.erase(pairKey(c.shapeA, c.shapeB));
   // Out of both bodies' lists.
   for (std::uint32_t edge = 0; edge < 2; ++edge) {

@@ -4,6 +4,7 @@
 // (sleeping), continuous.cpp, world_queries.cpp and snapshot.cpp.
 #pragma once
 
+#include "solver/colour_graph.hpp"
 #include "solver/islands.hpp"
 #include "solver/slot_list.hpp"
 #include "solver/softness.hpp"
@@ -282,6 +283,9 @@ struct WorldState {
   solver::SlotList awakeJointSet;
   std::vector<std::uint32_t> solvedJoints; ///< this step's joints (the awake set's, compacted)
   solver::Islands islands;                 ///< every non-static body's island
+  /// The contacts the soft step solves, in colours kept from step to step (updateContactColour),
+  /// by contact slot and body slot.
+  solver::ColourGraph contactGraph;
   std::vector<std::uint32_t> islandPieces; ///< scratch of a split
   /// This step's moving bodies in solver order (the awake set's, compacted), their solver state (plus, at
   /// staticIndex(), a never written state standing for every static body, and after it a never read one that takes the
@@ -476,6 +480,21 @@ void sleepIsland(WorldState& w, std::uint32_t island);
 /// Puts the body's island to sleep, split first when it may have come apart (so that only the
 /// body's piece sleeps).
 void sleepBodyIsland(WorldState& w, std::uint32_t slot);
+/// Whether the soft step solves the contact: alive, touching, not a sensor, a body moving (the
+/// contacts in WorldState::contactGraph).
+[[nodiscard]] inline bool solvedByStep(const WorldState& w, const Contact& c) noexcept {
+  return c.alive && !c.sensor && c.manifold.pointCount > 0 &&
+         (w.bodies[c.bodyA].moving() || w.bodies[c.bodyB].moving());
+}
+/// A body as the constraint graph knows it: by slot, a static one as none (it takes no colour).
+/// By type, not state: a sleeping body keeps its colours (its island wakes whole).
+[[nodiscard]] inline std::uint32_t graphBodyOf(const WorldState& w, std::uint32_t body) noexcept {
+  return w.bodies[body].type == BodyType::staticBody ? solver::ColourGraph::noBody : body;
+}
+/// Puts the contact in the constraint graph when the step solves it (alive, touching, not a
+/// sensor, a body moving), else takes it out: called when one of these may have changed (it
+/// began or stopped touching, its island woke or fell asleep, it was destroyed).
+void updateContactColour(WorldState& w, std::uint32_t slot);
 /// Whether a touching contact joins its bodies' islands (not a sensor, neither body static).
 [[nodiscard]] bool joinsIslands(const WorldState& w, const Contact& c);
 /// Accumulates rest time and puts islands to sleep that have rested long enough.

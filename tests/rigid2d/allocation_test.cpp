@@ -97,7 +97,7 @@ TEST(Allocation2D, nor_with_sleeping_and_a_thread_pool) {
 TEST(Allocation2D, saving_a_snapshot_again_reuses_its_storage) {
   World world;
   buildScene(world);
-  (void)allocationsOverSteps(world, 60);
+  (void)allocationsOverSteps(world, 240); // as above: contacts created, piles settled
   WorldSnapshot snapshot;
   world.saveState(snapshot);
   const long before = allocations.load();
