@@ -43,6 +43,69 @@ const WideKernels& selectWideKernels(SimdLevel level) {
 
 namespace {
 
+/// Fills one constraint of the overflow from its contact: anchors relative to the centres of
+/// mass, effective masses, and the approach speed before the step. The wide prepare computes the
+/// same in lanes (gatherLane and deriveLanes, contact_wide_kernels.hpp).
+ContactConstraint makeContactConstraint(const WorldState& w, Contact& contact, std::uint32_t slot, const Softness& soft,
+                                        const Softness& staticSoft) {
+  const SolverBodyInfo& a = w.bodyInfo[contact.bodyA];
+  const SolverBodyInfo& b = w.bodyInfo[contact.bodyB];
+  const Manifold& m = contact.manifold;
+  contact.approachSpeed = 0.0f; // the store notes this step's fastest impact
+  ContactConstraint c;
+  c.indexA = w.solverIndexOf(a);
+  c.indexB = w.solverIndexOf(b);
+  c.contact = slot;
+  c.mA = a.inverseMass;
+  c.iA = a.inverseInertia;
+  c.mB = b.inverseMass;
+  c.iB = b.inverseInertia;
+  c.normal = m.normal;
+  c.friction = contact.friction;
+  c.restitution = contact.restitution;
+  c.rollingResistance = contact.rollingResistance;
+  const float kRolling = c.iA + c.iB;
+  c.rollingMass = (c.rollingResistance > 0.0f && kRolling > 0.0f) ? 1.0f / kRolling : 0.0f;
+  c.rollingImpulse = w.def.enableWarmStarting ? contact.rollingImpulse : 0.0f;
+  c.tangentSpeed = contact.tangentSpeed;
+  c.softness = (c.mA == 0.0f || c.mB == 0.0f) ? staticSoft : soft;
+  c.pointCount = m.pointCount;
+  const Vec2f tangent{m.normal.y, -m.normal.x};
+  const Vec2f offsetA = a.centerOffset;
+  const Vec2f offsetB = b.centerOffset;
+  const BodyState& stA = w.states[c.indexA];
+  const BodyState& stB = w.states[c.indexB];
+  // Every field of both points is written (a missing point's are zero), so that the record is
+  // built without first being cleared.
+  for (int k = 0; k < 2; ++k) {
+    ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+    if (k >= m.pointCount) {
+      p = ConstraintPoint{};
+      continue;
+    }
+    const ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
+    p.maxNormalImpulse = 0.0f;
+    p.rA = mp.anchorA - offsetA;
+    p.rB = mp.anchorB - offsetB;
+    p.adjustedSeparation = mp.separation - dot(p.rB - p.rA, m.normal);
+    // Warm starting: last step's impulses (WorldDef::enableWarmStarting), else from zero.
+    p.normalImpulse = w.def.enableWarmStarting ? mp.normalImpulse : 0.0f;
+    p.tangentImpulse = w.def.enableWarmStarting ? mp.tangentImpulse : 0.0f;
+    const float rnA = cross(p.rA, m.normal);
+    const float rnB = cross(p.rB, m.normal);
+    const float kNormal = c.mA + c.mB + c.iA * rnA * rnA + c.iB * rnB * rnB;
+    p.normalMass = kNormal > 0.0f ? 1.0f / kNormal : 0.0f;
+    const float rtA = cross(p.rA, tangent);
+    const float rtB = cross(p.rB, tangent);
+    const float kTangent = c.mA + c.mB + c.iA * rtA * rtA + c.iB * rtB * rtB;
+    p.tangentMass = kTangent > 0.0f ? 1.0f / kTangent : 0.0f;
+    const Vec2f vA = stA.v + cross(stA.w, p.rA);
+    const Vec2f vB = stB.v + cross(stB.w, p.rB);
+    p.impactSpeed = -dot(vB - vA, m.normal);
+  }
+  return c;
+}
+
 Vec2f velocityAt(const BodyState& s, const Vec2f& r) { return s.v + cross(s.w, r); }
 
 void applyImpulse(BodyState& a, BodyState& b, const ContactConstraint& c, const ConstraintPoint& p,

@@ -76,40 +76,71 @@ struct BodiesW {
   storeRowHeadsW(rows, b.vx, b.vy, b.w, zeroW());
 }
 
-/// Copies a constraint into lane i of a wide constraint.
-[[gnu::always_inline]] inline void setLane(ContactConstraintWide& wc, int i, const ContactConstraint& c) {
+/// Lane i of a wide constraint from contact `slot`, as makeContactConstraint reads it: the
+/// bodies, the material, the anchors relative to the centres of mass, the raw separations and the
+/// impulses to warm start from. What follows from these (the effective masses, the separations
+/// at the anchors, the approach speeds) is computed for all lanes at once (deriveLanes). Returns
+/// the manifold's point count.
+[[gnu::always_inline]] inline int gatherLane(ContactConstraintWide& wc, int i, WorldState& w, std::uint32_t slot,
+                                             const Softness& soft, const Softness& staticSoft) {
+  Contact& contact = w.contacts[slot];
+  const SolverBodyInfo& a = w.bodyInfo[contact.bodyA];
+  const SolverBodyInfo& b = w.bodyInfo[contact.bodyB];
+  const Manifold& m = contact.manifold;
+  const bool warm = w.def.enableWarmStarting;
+  contact.approachSpeed = 0.0f; // the store notes this step's fastest impact
   const auto li = static_cast<std::size_t>(i);
-  wc.indexA[li] = c.indexA;
-  wc.indexB[li] = c.indexB;
-  lane(wc.invMassA, i) = c.mA;
-  lane(wc.invMassB, i) = c.mB;
-  lane(wc.invIA, i) = c.iA;
-  lane(wc.invIB, i) = c.iB;
-  lane(wc.normalX, i) = c.normal.x;
-  lane(wc.normalY, i) = c.normal.y;
-  lane(wc.friction, i) = c.friction;
-  lane(wc.restitution, i) = c.restitution;
-  lane(wc.rollingResistance, i) = c.rollingResistance;
-  lane(wc.rollingMass, i) = c.rollingMass;
-  lane(wc.rollingImpulse, i) = c.rollingImpulse;
-  lane(wc.tangentSpeed, i) = c.tangentSpeed;
-  lane(wc.biasRate, i) = c.softness.biasRate;
-  lane(wc.massScale, i) = c.softness.massScale;
-  lane(wc.impulseScale, i) = c.softness.impulseScale;
-  for (std::size_t k = 0; k < 2; ++k) {
-    const ConstraintPoint& p = c.points[k];
-    ContactConstraintWide::Point& wp = wc.points[k];
-    lane(wp.rAx, i) = p.rA.x;
-    lane(wp.rAy, i) = p.rA.y;
-    lane(wp.rBx, i) = p.rB.x;
-    lane(wp.rBy, i) = p.rB.y;
-    lane(wp.adjustedSeparation, i) = p.adjustedSeparation;
-    lane(wp.normalImpulse, i) = p.normalImpulse;
-    lane(wp.tangentImpulse, i) = p.tangentImpulse;
-    lane(wp.maxNormalImpulse, i) = 0.0f;
-    lane(wp.normalMass, i) = p.normalMass;
-    lane(wp.tangentMass, i) = p.tangentMass;
-    lane(wp.impactSpeed, i) = p.impactSpeed;
+  wc.indexA[li] = w.solverIndexOf(a);
+  wc.indexB[li] = w.solverIndexOf(b);
+  lane(wc.invMassA, i) = a.inverseMass;
+  lane(wc.invMassB, i) = b.inverseMass;
+  lane(wc.invIA, i) = a.inverseInertia;
+  lane(wc.invIB, i) = b.inverseInertia;
+  lane(wc.normalX, i) = m.normal.x;
+  lane(wc.normalY, i) = m.normal.y;
+  lane(wc.friction, i) = contact.friction;
+  lane(wc.restitution, i) = contact.restitution;
+  lane(wc.rollingResistance, i) = contact.rollingResistance;
+  lane(wc.rollingImpulse, i) = warm ? contact.rollingImpulse : 0.0f;
+  lane(wc.tangentSpeed, i) = contact.tangentSpeed;
+  const Softness& s = (a.inverseMass == 0.0f || b.inverseMass == 0.0f) ? staticSoft : soft;
+  lane(wc.biasRate, i) = s.biasRate;
+  lane(wc.massScale, i) = s.massScale;
+  lane(wc.impulseScale, i) = s.impulseScale;
+  for (int k = 0; k < 2; ++k) {
+    ContactConstraintWide::Point& wp = wc.points[static_cast<std::size_t>(k)];
+    if (k >= m.pointCount) {
+      lane(wp.rAx, i) = lane(wp.rAy, i) = lane(wp.rBx, i) = lane(wp.rBy, i) = 0.0f;
+      lane(wp.adjustedSeparation, i) = lane(wp.normalImpulse, i) = lane(wp.tangentImpulse, i) = 0.0f;
+      continue;
+    }
+    const ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
+    lane(wp.rAx, i) = mp.anchorA.x - a.centerOffset.x;
+    lane(wp.rAy, i) = mp.anchorA.y - a.centerOffset.y;
+    lane(wp.rBx, i) = mp.anchorB.x - b.centerOffset.x;
+    lane(wp.rBy, i) = mp.anchorB.y - b.centerOffset.y;
+    lane(wp.adjustedSeparation, i) = mp.separation; // made relative to the anchors in deriveLanes
+    lane(wp.normalImpulse, i) = warm ? mp.normalImpulse : 0.0f;
+    lane(wp.tangentImpulse, i) = warm ? mp.tangentImpulse : 0.0f;
+  }
+  return m.pointCount;
+}
+
+/// An unused lane i: the static state, no mass, no point (as ContactConstraint{}).
+[[gnu::always_inline]] inline void clearLane(ContactConstraintWide& wc, int i, std::uint32_t staticIndex) {
+  const auto li = static_cast<std::size_t>(i);
+  wc.indexA[li] = wc.indexB[li] = staticIndex;
+  for (FloatW* f : {&wc.invMassA, &wc.invMassB, &wc.invIA, &wc.invIB, &wc.normalX, &wc.normalY, &wc.friction,
+                    &wc.restitution, &wc.rollingResistance, &wc.rollingImpulse, &wc.tangentSpeed}) {
+    lane(*f, i) = 0.0f;
+  }
+  const Softness none;
+  lane(wc.biasRate, i) = none.biasRate;
+  lane(wc.massScale, i) = none.massScale;
+  lane(wc.impulseScale, i) = none.impulseScale;
+  for (ContactConstraintWide::Point& wp : wc.points) {
+    lane(wp.rAx, i) = lane(wp.rAy, i) = lane(wp.rBx, i) = lane(wp.rBy, i) = 0.0f;
+    lane(wp.adjustedSeparation, i) = lane(wp.normalImpulse, i) = lane(wp.tangentImpulse, i) = 0.0f;
   }
 }
 
@@ -117,6 +148,48 @@ struct BodiesW {
 void addAngular(FloatW& vx, FloatW& vy, FloatW w, FloatW rx, FloatW ry) {
   vx = vx - w * ry;
   vy = vy + w * rx;
+}
+
+/// What makeContactConstraint computes from the gathered lanes, for all lanes at once and with
+/// the same operations in the same order (a lane's results are the scalar constraint's, bit for
+/// bit): effective masses, separations relative to the anchors, and each point's approach speed
+/// before the step (positive approaching). Lanes without a point k (pointCount <= k) get zeros.
+[[gnu::always_inline]] inline void deriveLanes(ContactConstraintWide& wc, FloatW pointCount, const BodyState* states) {
+  const FloatW zero = zeroW();
+  const FloatW one = splatW(1.0f);
+  // 1/k where the mask holds, else 0 (and no division by zero in the other lanes).
+  const auto inverseWhere = [&](FloatW mask, FloatW k) { return selectW(mask, one / selectW(mask, k, one), zero); };
+  const FloatW kRolling = wc.invIA + wc.invIB;
+  wc.rollingMass = inverseWhere(andW(greaterW(wc.rollingResistance, zero), greaterW(kRolling, zero)), kRolling);
+  const BodiesW a = gatherVelocities(states, wc.indexA);
+  const BodiesW b = gatherVelocities(states, wc.indexB);
+  const FloatW nx = wc.normalX;
+  const FloatW ny = wc.normalY;
+  const FloatW tx = ny; // the tangent (n.y, -n.x)
+  const FloatW ty = negateW(nx);
+  for (std::size_t k = 0; k < 2; ++k) {
+    ContactConstraintWide::Point& p = wc.points[k];
+    const FloatW has = greaterW(pointCount, splatW(static_cast<float>(k)));
+    const FloatW rnA = p.rAx * ny - p.rAy * nx;
+    const FloatW rnB = p.rBx * ny - p.rBy * nx;
+    const FloatW kNormal = wc.invMassA + wc.invMassB + wc.invIA * rnA * rnA + wc.invIB * rnB * rnB;
+    p.normalMass = inverseWhere(andW(has, greaterW(kNormal, zero)), kNormal);
+    const FloatW rtA = p.rAx * ty - p.rAy * tx;
+    const FloatW rtB = p.rBx * ty - p.rBy * tx;
+    const FloatW kTangent = wc.invMassA + wc.invMassB + wc.invIA * rtA * rtA + wc.invIB * rtB * rtB;
+    p.tangentMass = inverseWhere(andW(has, greaterW(kTangent, zero)), kTangent);
+    const FloatW dx = p.rBx - p.rAx;
+    const FloatW dy = p.rBy - p.rAy;
+    p.adjustedSeparation = selectW(has, p.adjustedSeparation - (dx * nx + dy * ny), zero);
+    FloatW vAx = a.vx;
+    FloatW vAy = a.vy;
+    addAngular(vAx, vAy, a.w, p.rAx, p.rAy);
+    FloatW vBx = b.vx;
+    FloatW vBy = b.vy;
+    addAngular(vBx, vBy, b.w, p.rBx, p.rBy);
+    p.impactSpeed = selectW(has, negateW((vBx - vAx) * nx + (vBy - vAy) * ny), zero);
+    p.maxNormalImpulse = zero;
+  }
 }
 
 /// Relative normal or tangential velocity of point p along (dx, dy).
@@ -299,17 +372,15 @@ ContactConstraintWide* batchesOf(void* batches) { return static_cast<ContactCons
 void prepareBatch(void* batches, std::uint32_t batch, WorldState& w, const std::uint32_t* slots, int count,
                   const Softness& soft, const Softness& staticSoft) {
   ContactConstraintWide& wc = batchesOf(batches)[batch];
-  for (int i = 0; i < count; ++i) {
-    const std::uint32_t slot = slots[i];
-    setLane(wc, i, makeContactConstraint(w, w.contacts[slot], slot, soft, staticSoft));
-  }
-  if (count < simdWidth) {
-    ContactConstraint none;
-    none.indexA = none.indexB = w.staticIndex();
-    for (int i = count; i < simdWidth; ++i) {
-      setLane(wc, i, none);
+  FloatW pointCount = zeroW();
+  for (int i = 0; i < simdWidth; ++i) {
+    if (i < count) {
+      lane(pointCount, i) = static_cast<float>(gatherLane(wc, i, w, slots[i], soft, staticSoft));
+    } else {
+      clearLane(wc, i, w.staticIndex());
     }
   }
+  deriveLanes(wc, pointCount, w.states.data());
 }
 
 void warmStartBatches(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states,

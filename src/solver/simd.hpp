@@ -49,6 +49,8 @@ inline FloatW operator-(FloatW a, FloatW b) { return {_mm256_sub_ps(a.v, b.v)}; 
 inline FloatW operator*(FloatW a, FloatW b) { return {_mm256_mul_ps(a.v, b.v)}; }
 inline FloatW operator/(FloatW a, FloatW b) { return {_mm256_div_ps(a.v, b.v)}; }
 inline FloatW operator-(FloatW a) { return {_mm256_sub_ps(_mm256_setzero_ps(), a.v)}; }
+/// -a exactly as the scalar -x: the sign flipped (0 - a would turn -0 into +0).
+inline FloatW negateW(FloatW a) { return {_mm256_xor_ps(a.v, _mm256_set1_ps(-0.0f))}; }
 inline FloatW minW(FloatW a, FloatW b) { return {_mm256_min_ps(a.v, b.v)}; }
 inline FloatW maxW(FloatW a, FloatW b) { return {_mm256_max_ps(a.v, b.v)}; }
 inline FloatW greaterW(FloatW a, FloatW b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GT_OQ)}; }
@@ -145,6 +147,8 @@ inline FloatW operator-(FloatW a, FloatW b) { return {_mm_sub_ps(a.v, b.v)}; }
 inline FloatW operator*(FloatW a, FloatW b) { return {_mm_mul_ps(a.v, b.v)}; }
 inline FloatW operator/(FloatW a, FloatW b) { return {_mm_div_ps(a.v, b.v)}; }
 inline FloatW operator-(FloatW a) { return {_mm_sub_ps(_mm_setzero_ps(), a.v)}; }
+/// -a exactly as the scalar -x: the sign flipped (0 - a would turn -0 into +0).
+inline FloatW negateW(FloatW a) { return {_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))}; }
 inline FloatW minW(FloatW a, FloatW b) { return {_mm_min_ps(a.v, b.v)}; }
 inline FloatW maxW(FloatW a, FloatW b) { return {_mm_max_ps(a.v, b.v)}; }
 /// All bits set in the lanes where a > b.
@@ -198,6 +202,7 @@ inline FloatW operator/(FloatW a, FloatW b) {
   return mapW(a, b, [](float x, float y) { return x / y; });
 }
 inline FloatW operator-(FloatW a) { return zeroW() - a; }
+inline FloatW negateW(FloatW a) { return {{-a.v[0], -a.v[1], -a.v[2], -a.v[3]}}; }
 inline FloatW minW(FloatW a, FloatW b) {
   return mapW(a, b, [](float x, float y) { return y < x ? y : x; });
 }
