@@ -64,16 +64,43 @@ template <class F>
 /// A lane without a contact, in the solver's slot lists.
 inline constexpr std::uint32_t noContact = ~std::uint32_t{0};
 
-/// Notes the fastest impact for hit events and keeps the impulses for the next warm start.
-[[gnu::always_inline]] static inline void storePoint(Contact& contact, int k, float normalImpulse, float tangentImpulse,
-                                                     float maxNormalImpulse, float impactSpeed) {
-  if (maxNormalImpulse > 0.0f && impactSpeed > contact.approachSpeed) {
-    contact.approachSpeed = impactSpeed;
-    contact.fastestPoint = k;
+/// What the solve leaves of one contact point: the impulses to warm start from next step, N s,
+/// and the point's fastest approach, m/s, where it pushed (maxNormalImpulse > 0).
+struct SolvedPoint {
+  float normalImpulse = 0.0f;
+  float tangentImpulse = 0.0f;
+  float maxNormalImpulse = 0.0f;
+  float impactSpeed = 0.0f;
+};
+
+/// Keeps a contact's impulses for the next warm start and notes its fastest impact; returns
+/// whether that may raise a hit event (approachMayHit). It writes only the record's store line
+/// (Contact) as a rule: the fastest impact only where it may be a hit (the hit pass reads it only
+/// then), the rolling impulse only where the solve may have changed it (rolling resistance on:
+/// `rollingSolved`, or no warm start, which began it from zero).
+[[gnu::always_inline]] static inline bool storeContact(Contact& contact, const std::array<SolvedPoint, 2>& points,
+                                                       float rollingImpulse, bool rollingSolved, float hitThreshold) {
+  float approach = 0.0f;
+  int fastest = 0;
+  for (int k = 0; k < contact.manifold.pointCount; ++k) {
+    const SolvedPoint& p = points[static_cast<std::size_t>(k)];
+    ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(k)];
+    mp.normalImpulse = p.normalImpulse;
+    mp.tangentImpulse = p.tangentImpulse;
+    if (p.maxNormalImpulse > 0.0f && p.impactSpeed > approach) {
+      approach = p.impactSpeed;
+      fastest = k;
+    }
   }
-  ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(k)];
-  mp.normalImpulse = normalImpulse;
-  mp.tangentImpulse = tangentImpulse;
+  if (rollingSolved) {
+    contact.rollingImpulse = rollingImpulse;
+  }
+  const bool hit = approachMayHit(approach, hitThreshold);
+  if (hit) {
+    contact.approachSpeed = approach;
+    contact.fastestPoint = fastest;
+  }
+  return hit;
 }
 
 /// The per-substep constants of a solve pass.

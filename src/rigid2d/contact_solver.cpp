@@ -51,7 +51,6 @@ ContactConstraint makeContactConstraint(const WorldState& w, Contact& contact, s
   const SolverBodyInfo& a = w.bodyInfo[contact.bodyA];
   const SolverBodyInfo& b = w.bodyInfo[contact.bodyB];
   const Manifold& m = contact.manifold;
-  contact.approachSpeed = 0.0f; // the store notes this step's fastest impact
   ContactConstraint c;
   c.indexA = w.solverIndexOf(a);
   c.indexB = w.solverIndexOf(b);
@@ -264,14 +263,15 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
 /// one in about colourCount apart in the pool, too sparse for the hardware to see the pattern.
 constexpr std::uint32_t prefetchDistance = 2;
 
-/// Asks the cache for the contacts in slots[0, count) (noContact: none). Always inlined: GCC 12
-/// finds a function of nothing but prefetches free of side effects and deletes its calls.
+/// Asks the cache for bytes [begin, end) of the contacts in slots[0, count) (noContact: none).
+/// Always inlined: GCC 12 finds a function of nothing but prefetches free of side effects and
+/// deletes its calls.
 [[gnu::always_inline]] inline void prefetchContacts(const WorldState& w, const std::uint32_t* slots,
-                                                    std::size_t count) {
+                                                    std::size_t count, std::size_t begin, std::size_t end) {
   for (std::size_t i = 0; i < count; ++i) {
     if (slots[i] != noContact) {
       const auto* bytes = reinterpret_cast<const char*>(&w.contacts[slots[i]]);
-      for (std::size_t offset = 0; offset < contactSolverBytes; offset += 64) {
+      for (std::size_t offset = begin; offset < end; offset += 64) {
         __builtin_prefetch(bytes + offset); // (a write hint needs PRFCHW: not baseline)
       }
     }
@@ -363,7 +363,7 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
     for (std::uint32_t batch = begin; batch < end; ++batch) {
       const std::uint32_t* slots = &d.slots[std::size_t{batch} * width];
       if (batch + prefetchDistance < batches) {
-        prefetchContacts(w, slots + std::size_t{prefetchDistance} * width, width);
+        prefetchContacts(w, slots + std::size_t{prefetchDistance} * width, width, 0, contactSolverBytes);
       }
       const auto count = static_cast<int>(std::find(slots, slots + width, noContact) - slots);
       kernels.prepare(d.batches(), batch, w, slots, count, d.soft, d.staticSoft);
@@ -417,13 +417,14 @@ void storeImpulses(WorldState& w) {
   ContactSolverData& d = *w.contactSolver;
   const float hitThreshold = w.def.hitEventThreshold;
   for (const ContactConstraint& c : d.overflow) {
-    Contact& contact = w.contacts[c.contact];
-    contact.rollingImpulse = c.rollingImpulse;
-    for (int k = 0; k < c.pointCount; ++k) {
-      const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-      storePoint(contact, k, p.normalImpulse, p.tangentImpulse, p.maxNormalImpulse, p.impactSpeed);
+    std::array<SolvedPoint, 2> points;
+    for (std::size_t k = 0; k < 2; ++k) {
+      const ConstraintPoint& p = c.points[k];
+      points[k] = {p.normalImpulse, p.tangentImpulse, p.maxNormalImpulse, p.impactSpeed};
     }
-    w.maybeHit[c.contact] = approachMayHit(contact.approachSpeed, hitThreshold) ? 1 : 0;
+    const bool rollingSolved = c.rollingMass != 0.0f || !w.def.enableWarmStarting;
+    w.maybeHit[c.contact] =
+        storeContact(w.contacts[c.contact], points, c.rollingImpulse, rollingSolved, hitThreshold) ? 1 : 0;
   }
   const int width = d.kernels->width;
   const auto batches = static_cast<std::uint32_t>(d.slots.size() / static_cast<std::size_t>(width));
@@ -431,7 +432,7 @@ void storeImpulses(WorldState& w) {
     for (std::uint32_t batch = begin; batch < end; ++batch) {
       if (batch + prefetchDistance < end) {
         prefetchContacts(w, &d.slots[std::size_t{batch + prefetchDistance} * static_cast<std::size_t>(width)],
-                         static_cast<std::size_t>(width));
+                         static_cast<std::size_t>(width), contactStoreLine, contactStoreLine + 1);
       }
       d.kernels->store(d.batches(), batch, w, &d.slots[std::size_t{batch} * static_cast<std::size_t>(width)],
                        hitThreshold);

@@ -88,7 +88,6 @@ struct BodiesW {
   const SolverBodyInfo& b = w.bodyInfo[contact.bodyB];
   const Manifold& m = contact.manifold;
   const bool warm = w.def.enableWarmStarting;
-  contact.approachSpeed = 0.0f; // the store notes this step's fastest impact
   const auto li = static_cast<std::size_t>(i);
   wc.indexA[li] = w.solverIndexOf(a);
   wc.indexB[li] = w.solverIndexOf(b);
@@ -400,19 +399,21 @@ void solveBatches(void* batches, std::uint32_t begin, std::uint32_t end, BodySta
 void storeBatch(const void* batches, std::uint32_t batch, WorldState& w, const std::uint32_t* slots,
                 float hitThreshold) {
   const ContactConstraintWide& wc = static_cast<const ContactConstraintWide*>(batches)[batch];
+  const bool warm = w.def.enableWarmStarting;
   for (int i = 0; i < simdWidth; ++i) {
     const std::uint32_t slot = slots[i];
     if (slot == noContact) {
       continue;
     }
-    Contact& contact = w.contacts[slot];
-    contact.rollingImpulse = lane(wc.rollingImpulse, i);
-    for (int k = 0; k < contact.manifold.pointCount; ++k) {
-      const ContactConstraintWide::Point& p = wc.points[static_cast<std::size_t>(k)];
-      storePoint(contact, k, lane(p.normalImpulse, i), lane(p.tangentImpulse, i), lane(p.maxNormalImpulse, i),
-                 lane(p.impactSpeed, i));
+    std::array<SolvedPoint, 2> points;
+    for (std::size_t k = 0; k < 2; ++k) {
+      const ContactConstraintWide::Point& p = wc.points[k];
+      points[k] = {lane(p.normalImpulse, i), lane(p.tangentImpulse, i), lane(p.maxNormalImpulse, i),
+                   lane(p.impactSpeed, i)};
     }
-    w.maybeHit[slot] = approachMayHit(contact.approachSpeed, hitThreshold) ? 1 : 0;
+    const bool rollingSolved = lane(wc.rollingMass, i) != 0.0f || !warm;
+    w.maybeHit[slot] =
+        storeContact(w.contacts[slot], points, lane(wc.rollingImpulse, i), rollingSolved, hitThreshold) ? 1 : 0;
   }
 }
 

@@ -125,24 +125,29 @@ struct ManifoldFrame {
 };
 
 /// A pair of shapes whose fat boxes overlap: touching when its manifold has points.
-struct Contact {
+///
+/// Laid out by cache line (the record starts on one): the first holds what the pair update, the
+/// islands and the colouring read (slots, flags) with the material; the second holds exactly the
+/// manifold's points' impulses and its point count, all the store after the solve writes; the
+/// third the rest of what the prepare reads; the collide pass's frame and the lists follow.
+struct alignas(64) Contact {
   std::uint32_t shapeA = 0; ///< the lower shape slot
   std::uint32_t shapeB = 0;
   std::uint32_t bodyA = 0; ///< body slots
   std::uint32_t bodyB = 0;
-  // The flags beside the slots, in the record's first cache line with them: the colouring reads
-  // only these and the manifold's point count of each of the awake set's contacts.
   bool sensor = false;   ///< either shape is a sensor: events only, no response
   bool preSolve = false; ///< either shape asks the pre-solve callback
   bool reusable = false; ///< both shapes have sharp corners: the manifold may be carried (manifold_reuse.cpp)
   bool alive = false;
-  Manifold manifold;
   float friction = 0.0f;
   float restitution = 0.0f;
   float rollingResistance = 0.0f; ///< m (torque per unit normal force)
-  float rollingImpulse = 0.0f;    ///< solver state, N m s (warm start)
   float tangentSpeed = 0.0f;      ///< the surfaces' sliding speed friction drives toward, m/s
-  float approachSpeed = 0.0f;     ///< the solver's fastest impact this step, m/s (for hit events)
+  Manifold manifold;
+  float rollingImpulse = 0.0f; ///< solver state, N m s (warm start)
+  /// The solver's fastest impact this step, m/s, and the point that met it: hit events. Written
+  /// only where the step may raise one (maybeHit), and read only then.
+  float approachSpeed = 0.0f;
   int fastestPoint = 0;
   ManifoldFrame frame; ///< cold: read by the collide pass only (after the solver's fields)
   /// The contact's place in each body's list of contacts (edge 0: bodyA's, 1: bodyB's), as edge
@@ -150,6 +155,12 @@ struct Contact {
   std::array<std::uint32_t, 2> next{0xffffffffU, 0xffffffffU};
   std::array<std::uint32_t, 2> prev{0xffffffffU, 0xffffffffU};
 };
+/// The offset of the record's store line: from the first point's normal impulse to the
+/// manifold's point count.
+inline constexpr std::size_t contactStoreLine = 64;
+static_assert(offsetof(Contact, manifold) + offsetof(Manifold, points) + offsetof(ManifoldPoint, normalImpulse) ==
+              contactStoreLine);
+static_assert(offsetof(Contact, manifold) + offsetof(Manifold, pointCount) + sizeof(int) <= contactStoreLine + 64);
 
 /// The end of a body's contact list.
 inline constexpr std::uint32_t noContactEdge = 0xffffffffU;
