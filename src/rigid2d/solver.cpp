@@ -9,12 +9,15 @@
 // next step.
 #include "rigid2d/joints.hpp"
 #include "rigid2d/world_impl.hpp"
+#include "solver/simd.hpp"
 #include "solver/stage_clock.hpp"
 
 #include <impetus/math/scalar.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace impetus::rigid2d::detail {
 
@@ -85,18 +88,86 @@ void integrateVelocities(WorldState& w, const StepContext& context) {
   });
 }
 
+namespace {
+
+/// One body's positions over a substep: its speeds held within the world's limits (capVelocity;
+/// kinematic bodies keep theirs), then the position and rotation deltas advanced.
+void integrateBody(BodyState& s, const BodySim& sim, const StepContext& context) {
+  if (sim.dynamic) {
+    capVelocity(s, context, sim.allowFastRotation);
+  }
+  s.dp += s.v * context.h;
+  const float angle = s.w * context.h;
+  s.dq = normalize(Rot2f{s.dq.c - angle * s.dq.s, s.dq.s + angle * s.dq.c});
+}
+
+/// integrateBody for solver::simdWidth dynamic bodies from `first` at once (the baseline's
+/// lanes), operation for operation, so each lane is the scalar result to the bit; false (nothing
+/// written) when a body is kinematic or may spin fast, or needs one of normalize's or
+/// capVelocity's rare branches (a speed over the cap, a rotation that overflowed or vanished):
+/// the caller then takes those bodies one by one.
+bool integrateBodiesWide(WorldState& w, std::uint32_t first, const StepContext& context) {
+  using namespace solver;
+  constexpr auto lanes = static_cast<std::size_t>(simdWidth);
+  float* rows[lanes];
+  const float* in[lanes];
+  for (std::size_t i = 0; i < lanes; ++i) {
+    const BodySim& sim = w.sims[first + i];
+    if (!sim.dynamic || sim.allowFastRotation) {
+      return false;
+    }
+    rows[i] = &w.states[first + i].v.x;
+    in[i] = rows[i];
+  }
+  FloatW c[8]; // v.x, v.y, w, unused, dp.x, dp.y, dq.c, dq.s
+  loadRowsW(in, c);
+  // std::clamp(x, lo, hi): lo where x < lo, else hi where hi < x, else x (a NaN stays).
+  const auto clampW = [](FloatW x, FloatW lo, FloatW hi) {
+    return selectW(greaterW(lo, x), lo, selectW(greaterW(x, hi), hi, x));
+  };
+  const FloatW maxSpeed = splatW(context.maxLinearSpeed);
+  const FloatW maxSpin = splatW(context.maxAngularSpeed);
+  const FloatW vx = clampW(c[0], negateW(maxSpeed), maxSpeed);
+  const FloatW vy = clampW(c[1], negateW(maxSpeed), maxSpeed);
+  const FloatW spin = clampW(c[2], negateW(maxSpin), maxSpin);
+  const FloatW overCap = greaterW(vx * vx + vy * vy, maxSpeed * maxSpeed);
+  const FloatW h = splatW(context.h);
+  const FloatW angle = spin * h;
+  const FloatW qc = c[6] - angle * c[7];
+  const FloatW qs = c[7] + angle * c[6];
+  const FloatW len = sqrtW(qc * qc + qs * qs);
+  // normalize's rare lanes: an infinite length (its hypot) or one at most the tolerance (the
+  // identity). A NaN is neither: it divides, as in the scalar code.
+  const FloatW tolerance = splatW(normalizeTolerance<float>);
+  const FloatW rare = orW(orW(greaterW(len, splatW(std::numeric_limits<float>::max())), greaterW(tolerance, len)),
+                          equalW(len, tolerance));
+  if (anyNonZeroW(orW(rare, overCap))) {
+    return false;
+  }
+  float* tails[lanes];
+  for (std::size_t i = 0; i < lanes; ++i) {
+    tails[i] = rows[i] + 4;
+  }
+  storeRowHeadsW(rows, vx, vy, spin, c[3]);
+  storeRowHeadsW(tails, c[4] + vx * h, c[5] + vy * h, qc / len, qs / len);
+  return true;
+}
+
+} // namespace
+
 void integratePositions(WorldState& w, const StepContext& context) {
-  const float h = context.h;
   w.parallelFor(static_cast<std::uint32_t>(w.sims.size()), 256, [&](std::uint32_t begin, std::uint32_t end) {
-    for (std::uint32_t i = begin; i < end; ++i) {
-      BodyState& s = w.states[i];
-      const BodySim& sim = w.sims[i];
-      if (sim.dynamic) {
-        capVelocity(s, context, sim.allowFastRotation);
+    constexpr auto lanes = static_cast<std::uint32_t>(solver::simdWidth);
+    std::uint32_t i = begin;
+    for (; i + lanes <= end; i += lanes) {
+      if (!integrateBodiesWide(w, i, context)) {
+        for (std::uint32_t k = i; k < i + lanes; ++k) {
+          integrateBody(w.states[k], w.sims[k], context);
+        }
       }
-      s.dp += s.v * h;
-      const float angle = s.w * h;
-      s.dq = normalize(Rot2f{s.dq.c - angle * s.dq.s, s.dq.s + angle * s.dq.c});
+    }
+    for (; i < end; ++i) {
+      integrateBody(w.states[i], w.sims[i], context);
     }
   });
 }

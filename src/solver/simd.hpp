@@ -9,6 +9,7 @@
 // dq.c, dq.s) and transposed into one FloatW per field.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -48,6 +49,7 @@ inline FloatW operator+(FloatW a, FloatW b) { return {_mm256_add_ps(a.v, b.v)}; 
 inline FloatW operator-(FloatW a, FloatW b) { return {_mm256_sub_ps(a.v, b.v)}; }
 inline FloatW operator*(FloatW a, FloatW b) { return {_mm256_mul_ps(a.v, b.v)}; }
 inline FloatW operator/(FloatW a, FloatW b) { return {_mm256_div_ps(a.v, b.v)}; }
+inline FloatW sqrtW(FloatW a) { return {_mm256_sqrt_ps(a.v)}; }
 inline FloatW operator-(FloatW a) { return {_mm256_sub_ps(_mm256_setzero_ps(), a.v)}; }
 /// -a exactly as the scalar -x: the sign flipped (0 - a would turn -0 into +0).
 inline FloatW negateW(FloatW a) { return {_mm256_xor_ps(a.v, _mm256_set1_ps(-0.0f))}; }
@@ -146,6 +148,8 @@ inline FloatW operator+(FloatW a, FloatW b) { return {_mm_add_ps(a.v, b.v)}; }
 inline FloatW operator-(FloatW a, FloatW b) { return {_mm_sub_ps(a.v, b.v)}; }
 inline FloatW operator*(FloatW a, FloatW b) { return {_mm_mul_ps(a.v, b.v)}; }
 inline FloatW operator/(FloatW a, FloatW b) { return {_mm_div_ps(a.v, b.v)}; }
+/// The correctly rounded square root in each lane, as std::sqrt.
+inline FloatW sqrtW(FloatW a) { return {_mm_sqrt_ps(a.v)}; }
 inline FloatW operator-(FloatW a) { return {_mm_sub_ps(_mm_setzero_ps(), a.v)}; }
 /// -a exactly as the scalar -x: the sign flipped (0 - a would turn -0 into +0).
 inline FloatW negateW(FloatW a) { return {_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))}; }
@@ -203,6 +207,7 @@ inline FloatW operator/(FloatW a, FloatW b) {
 }
 inline FloatW operator-(FloatW a) { return zeroW() - a; }
 inline FloatW negateW(FloatW a) { return {{-a.v[0], -a.v[1], -a.v[2], -a.v[3]}}; }
+inline FloatW sqrtW(FloatW a) { return {{std::sqrt(a.v[0]), std::sqrt(a.v[1]), std::sqrt(a.v[2]), std::sqrt(a.v[3])}}; }
 inline FloatW minW(FloatW a, FloatW b) {
   return mapW(a, b, [](float x, float y) { return y < x ? y : x; });
 }
