@@ -46,11 +46,6 @@ void buildSolverBodies(WorldState& w) {
   const std::span<const std::uint32_t> awake = w.awakeBodySet.items();
   w.awakeBodies.assign(awake.begin(), awake.end());
   const auto n = static_cast<std::uint32_t>(w.awakeBodies.size());
-  for (std::uint32_t i = 0; i < n; ++i) {
-    Body& b = w.bodies[w.awakeBodies[i]];
-    b.solverIndex = i;
-    w.bodyInfo[w.awakeBodies[i]] = {i, b.inverseMass, b.inverseInertia, b.center - b.transform.p};
-  }
   w.states.resize(n + 2);
   w.sims.resize(n);
   w.states[n] = BodyState{}; // the static state: at rest, never written
@@ -59,7 +54,10 @@ void buildSolverBodies(WorldState& w) {
   const Vec2f gravity = w.def.gravity;
   w.parallelFor(n, 256, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t i = begin; i < end; ++i) {
-      const Body& b = w.bodies[w.awakeBodies[i]];
+      // Each body writes only its own record and entries: the bodies run on threads.
+      Body& b = w.bodies[w.awakeBodies[i]];
+      b.solverIndex = i;
+      w.bodyInfo[w.awakeBodies[i]] = {i, b.inverseMass, b.inverseInertia, b.center - b.transform.p};
       w.states[i] = BodyState{b.linearVelocity, b.angularVelocity, 0.0f, {}, Rot2f::identity()};
       BodySim& sim = w.sims[i];
       sim.dynamic = b.type == BodyType::dynamicBody;
