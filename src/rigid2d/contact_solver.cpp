@@ -266,8 +266,8 @@ constexpr std::uint32_t prefetchDistance = 2;
 /// Asks the cache for bytes [begin, end) of the contacts in slots[0, count) (noContact: none).
 /// Always inlined: GCC 12 finds a function of nothing but prefetches free of side effects and
 /// deletes its calls.
-[[gnu::always_inline]] inline void prefetchContacts(const WorldState& w, const std::uint32_t* slots,
-                                                    std::size_t count, std::size_t begin, std::size_t end) {
+[[gnu::always_inline]] inline void prefetchContacts(const WorldState& w, const std::uint32_t* slots, std::size_t count,
+                                                    std::size_t begin, std::size_t end) {
   for (std::size_t i = 0; i < count; ++i) {
     if (slots[i] != noContact) {
       const auto* bytes = reinterpret_cast<const char*>(&w.contacts[slots[i]]);
