@@ -111,9 +111,10 @@ template <int Face> void clipOnFaceOfA(const Polygon& a, const BoxInA& boxB, con
     const Vec2f p = clip[k];
     const float separation = p.y - r1.y;
     const Vec2f local{p.x, p.y + ((p.y - separation) - p.y) * 0.5f};
-    return ClipPoint{transformPoint(xfA, f::from(local)), separation, featureId(edge, clipId[k], false)};
+    return ClipPoint{transformPoint(xfA, f::from(local)), separation,
+                     clipPointId(k == 0 ? edgeNext : edge, k == 0 ? incident : incidentNext, false), clipId[k]};
   };
-  storePoints(clipPoint(0), clipPoint(1), xfA, xfB, m);
+  storePoints(clipPoint(1), clipPoint(0), xfA, xfB, m); // storePoints' order, for A's face
 }
 
 /// collideBoxes with B's face `sb.edge` as the reference: clipContact, with the products with
@@ -152,7 +153,7 @@ void clipOnFaceOfB(const Polygon& a, const BoxInA& boxB, const EdgeSeparation& s
     const Vec2f p = clip[k];
     const float separation = dot(n, p - v1);
     return ClipPoint{transformPoint(xfA, lerp(p, p - n * separation, 0.5f)), separation,
-                     featureId(edge, clipId[k], true)};
+                     clipPointId(k == 0 ? edgeNext : edge, k == 0 ? incident : incidentNext, true), clipId[k]};
   };
   storePoints(clipPoint(0), clipPoint(1), xfA, xfB, m);
 }

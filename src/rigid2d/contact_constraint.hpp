@@ -108,7 +108,12 @@ struct ContactSolveParams {
   float inverseH = 0.0f;             ///< 1/s
   float pushSpeed = 0.0f;            ///< the most the bias may push apart, m/s
   float restitutionThreshold = 0.0f; ///< m/s: slower impacts do not bounce
-  bool useBias = true;               ///< false: the relax pass
+  /// true: the solve pass, whose normal rows push overlaps apart (the soft bias). false: the
+  /// relax pass, which takes that push back and is the only one to solve friction and rolling
+  /// resistance (as Box2D v3.2): they act on the velocities the step keeps, and solving them
+  /// against the biased ones as well cost a third of the solve pass and slowed a tall pile's
+  /// convergence (large_pyramid's top sank 0.734 m rather than 0.729 m; docs/performance.md).
+  bool useBias = true;
 };
 
 /// Wide kernels over batches [begin, end) of an array of `width`-lane constraints (opaque here:

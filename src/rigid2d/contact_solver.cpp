@@ -238,17 +238,20 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
     p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
     applyImpulse(a, b, c, p, c.normal * applied);
   }
-  const Vec2f tangent{c.normal.y, -c.normal.x};
-  for (int k = 0; k < c.pointCount; ++k) {
-    ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-    const float vt = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), tangent) - c.tangentSpeed;
-    const float limit = c.friction * p.normalImpulse;
-    const float total = std::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
-    const float applied = total - p.tangentImpulse;
-    p.tangentImpulse = total;
-    applyImpulse(a, b, c, p, tangent * applied);
+  // Friction and rolling resistance in the relax pass only (ContactSolveParams::useBias).
+  if (!params.useBias) {
+    solveRolling(a, b, c);
+    const Vec2f tangent{c.normal.y, -c.normal.x};
+    for (int k = 0; k < c.pointCount; ++k) {
+      ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+      const float vt = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), tangent) - c.tangentSpeed;
+      const float limit = c.friction * p.normalImpulse;
+      const float total = std::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
+      const float applied = total - p.tangentImpulse;
+      p.tangentImpulse = total;
+      applyImpulse(a, b, c, p, tangent * applied);
+    }
   }
-  solveRolling(a, b, c);
   if (c.indexA != staticIndex) {
     states[c.indexA].v = a.v;
     states[c.indexA].w = a.w;

@@ -324,24 +324,28 @@ void bounceWide(ContactConstraintWide& c, BodiesW& a, BodiesW& b, const std::arr
     totalNormal = totalNormal + total;
     applyW(a, b, c, p, applied * c.normalX, applied * c.normalY);
   }
-  const FloatW tx = c.normalY;
-  const FloatW ty = -c.normalX;
-  for (ContactConstraintWide::Point& p : c.points) {
-    const FloatW vt = relativeVelocity(a, b, p, tx, ty) - c.tangentSpeed;
-    const FloatW limit = c.friction * p.normalImpulse;
-    const FloatW total = maxW(minW(p.tangentImpulse - p.tangentMass * vt, limit), -limit);
-    const FloatW applied = total - p.tangentImpulse;
-    p.tangentImpulse = total;
-    applyW(a, b, c, p, applied * tx, applied * ty);
-  }
-  if (anyNonZeroW(c.rollingMass)) {
-    // Rolling resistance (zero rolling mass in lanes without).
-    const FloatW limit = c.rollingResistance * totalNormal;
-    const FloatW total = maxW(minW(c.rollingImpulse - c.rollingMass * (b.w - a.w), limit), -limit);
-    const FloatW applied = total - c.rollingImpulse;
-    c.rollingImpulse = total;
-    a.w = a.w - c.invIA * applied;
-    b.w = b.w + c.invIB * applied;
+  // Friction and rolling resistance act on the velocities alone: they are solved in the relax
+  // pass only (see ContactSolveParams::useBias).
+  if (!params.useBias) {
+    if (anyNonZeroW(c.rollingMass)) {
+      // Rolling resistance (zero rolling mass in lanes without).
+      const FloatW limit = c.rollingResistance * totalNormal;
+      const FloatW total = maxW(minW(c.rollingImpulse - c.rollingMass * (b.w - a.w), limit), -limit);
+      const FloatW applied = total - c.rollingImpulse;
+      c.rollingImpulse = total;
+      a.w = a.w - c.invIA * applied;
+      b.w = b.w + c.invIB * applied;
+    }
+    const FloatW tx = c.normalY;
+    const FloatW ty = -c.normalX;
+    for (ContactConstraintWide::Point& p : c.points) {
+      const FloatW vt = relativeVelocity(a, b, p, tx, ty) - c.tangentSpeed;
+      const FloatW limit = c.friction * p.normalImpulse;
+      const FloatW total = maxW(minW(p.tangentImpulse - p.tangentMass * vt, limit), -limit);
+      const FloatW applied = total - p.tangentImpulse;
+      p.tangentImpulse = total;
+      applyW(a, b, c, p, applied * tx, applied * ty);
+    }
   }
   scatter(states, c.indexA, staticIndex, a);
   scatter(states, c.indexB, staticIndex, b);

@@ -65,6 +65,16 @@ inline std::uint16_t featureId(int referenceEdge, int incidentVertex, bool flipp
   return static_cast<std::uint16_t>((flipped ? 0x8000 : 0) | (referenceEdge << 4) | incidentVertex);
 }
 
+/// A face clip's point id, Box2D v3's: A's vertex and B's vertex at the point's end of the
+/// reference face and the incident edge (whichever of the two is the reference), so that a
+/// point keeps its id, and its warm start, when two nearly parallel faces trade the reference
+/// role. (The tag bit keeps these apart from featureId's one-point contacts.)
+inline std::uint16_t clipPointId(int referenceVertex, int incidentVertex, bool flipped) {
+  const int vertexA = flipped ? incidentVertex : referenceVertex;
+  const int vertexB = flipped ? referenceVertex : incidentVertex;
+  return static_cast<std::uint16_t>(0x4000 | (vertexA << 4) | vertexB);
+}
+
 /// The closest points of segment p1-q1 (the reference face) and segment p2-q2 (the incident
 /// edge): parameters s on the first and t on the second, both in [0, 1] (Ericson, Real-Time
 /// Collision Detection 5.1.9), and which feature of the second holds its point (0 p2, 1 q2,
@@ -302,8 +312,8 @@ inline void closestPointsContact(const Apart& apart, const Transform2f& xfA, con
 }
 
 /// The reference face: A's unless B's is clearly better (by 0.1 linearSlop: the hysteresis keeps
-/// the choice, and the contact's feature ids, from flickering between two nearly parallel faces
-/// of equal separation). With the cores apart, the hysteresis' face is kept only when it is
+/// the choice, and so the normal, from flickering between two nearly parallel faces of equal
+/// separation; the points keep their ids either way, clipPointId). With the cores apart, the hysteresis' face is kept only when it is
 /// nearly parallel to the best face (normals within 4.5 mrad of opposite: a face contact
 /// measured along it is then deeper by a factor 1 / cos of the angle, at most 1 + 1e-5);
 /// otherwise the best face is taken: its closest points are over it (a face contact), and a
@@ -355,11 +365,16 @@ struct ClipPoint {
   Vec2f point; // world
   float separation;
   std::uint16_t id;
+  int clipFeature; // what the clip left at it: an incident vertex, or a side plane (8, 9)
 };
 
 /// clipContact's output for two clip points: each kept unless beyond reach, in order, and the
 /// second dropped when both were clipped to the same feature (after being written, as there).
-/// The slots are fixed, so both points can be computed side by side.
+/// The slots are fixed, so both points can be computed side by side. The order is Box2D v3's:
+/// the end of the incident edge that lies first along the reference face's tangent (A's face:
+/// the incident edge's second vertex, clip point 1; B's face: clip point 0) comes first. The
+/// solver takes a manifold's points one after the other, so the order is part of the result;
+/// v3's makes the two engines' piles settle alike, point for point.
 [[gnu::always_inline]] inline void storePoints(const ClipPoint& p0, const ClipPoint& p1, const Transform2f& xfA,
                                                const Transform2f& xfB, Manifold& m) {
   const bool keep0 = !(p0.separation > speculativeDistance);
@@ -368,7 +383,7 @@ struct ClipPoint {
     setPoint(m.points[0], p0.point, p0.separation, p0.id, xfA, xfB);
     if (keep1) {
       setPoint(m.points[1], p1.point, p1.separation, p1.id, xfA, xfB);
-      m.pointCount = p0.id == p1.id ? 1 : 2; // both clipped to the same vertex: one
+      m.pointCount = p0.clipFeature == p1.clipFeature ? 1 : 2; // both clipped to the same vertex: one
     } else {
       m.pointCount = 1;
     }
@@ -439,9 +454,13 @@ template <int CountA, int CountB> void clipContact(const PolygonView& a, float r
     const Vec2f onIncident = p - f.n * f.rInc;
     const Vec2f onReference = p - f.n * (core - f.rRef);
     return ClipPoint{transformPoint(xfA, lerp(onIncident, onReference, 0.5f)), core - f.rRef - f.rInc,
-                     featureId(f.edge, clipId[k], flip)};
+                     clipPointId(k == 0 ? f.edgeNext : f.edge, k == 0 ? f.i1 : f.i2, flip), clipId[k]};
   };
-  storePoints(clipPoint(0), clipPoint(1), xfA, xfB, m);
+  if (flip) {
+    storePoints(clipPoint(0), clipPoint(1), xfA, xfB, m);
+  } else {
+    storePoints(clipPoint(1), clipPoint(0), xfA, xfB, m);
+  }
 }
 
 /// Whether `p` is exactly what makeBox builds (box_manifold.cpp).
