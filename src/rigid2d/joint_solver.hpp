@@ -27,6 +27,8 @@ using solver::SpringPart;
 
 /// One constraint row of the plane: a direction and each body's moment arm (solver::Row).
 using JointRow = solver::Row<Vec2f, float>;
+/// A row on the rotations alone (solver::AngularRow).
+using AngleRow = solver::AngularRow<float>;
 /// The two rows of a point constraint (x and y), or of a slider's line and angle.
 using RowPair = std::array<JointRow, 2>;
 
@@ -103,7 +105,9 @@ struct JointPose {
 }
 
 /// The angle row: the relative spin wB - wA.
-[[nodiscard]] inline JointRow angleRow() { return {{}, 1.0f, 1.0f}; }
+[[nodiscard]] inline AngleRow angleRow() { return {1.0f, 1.0f}; }
+/// The angle row as a general row, for a block that couples it with a linear one (a slider).
+[[nodiscard]] inline JointRow angleJointRow() { return {{}, 1.0f, 1.0f}; }
 
 /// Writes a body's new velocities back unless it is the static state.
 inline void storeVelocity(std::vector<BodyState>& states, std::uint32_t index, std::uint32_t staticIndex,

@@ -27,7 +27,7 @@ namespace {
 
 /// The line-and-angle block's rows and their position errors: B's anchor's distance from A's
 /// line (m) and the relative angle's (rad).
-RowPair blockRows(const SliderGeometry& g) { return {g.normalRow(), angleRow()}; }
+RowPair blockRows(const SliderGeometry& g) { return {g.normalRow(), angleJointRow()}; }
 
 std::array<float, 2> blockError(const PrismaticJoint& joint, const JointFrame& f, const SliderGeometry& g,
                                 const BodyState& a, const BodyState& b) {

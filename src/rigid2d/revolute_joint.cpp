@@ -50,9 +50,11 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
                 std::uint32_t staticIndex, const StepContext& context, bool useBias) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
     const RevoluteJointSettings& def = joint.def;
-    const JointRow angle = angleRow();
+    const AngleRow angle = angleRow();
+    // The positions do not change within a pass: one joint angle for the spring and the limits.
+    const float position = def.enableSpring || def.enableLimit ? jointAngle(joint, a, b) : 0.0f;
     if (def.enableSpring) {
-      joint.spring.solve(angle, frame, a, b, jointAngle(joint, a, b), useBias);
+      joint.spring.solve(angle, frame, a, b, position, useBias);
     }
     if (def.enableMotor) {
       joint.motor.solve(angle, frame, a, b, def.motorSpeed, context.h * def.maxMotorTorque);
@@ -61,8 +63,8 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
       joint.friction.solve(angle, frame, a, b, 0.0f, context.h * def.frictionTorque);
     }
     if (def.enableLimit) {
-      joint.limit.solve(angle, frame, a, b, jointAngle(joint, a, b), def.lowerAngle, def.upperAngle, frame.softness,
-                        context.inverseH, useBias);
+      joint.limit.solve(angle, frame, a, b, position, def.lowerAngle, def.upperAngle, frame.softness, context.inverseH,
+                        useBias);
     }
     const Vec2f rA = currentAnchor(a, frame.frameA);
     const Vec2f rB = currentAnchor(b, frame.frameB);

@@ -79,6 +79,43 @@ template <class Vec, class Angular, class Pair>
   return mass * speed;
 }
 
+/// A row on the bodies' rotations alone (an angle row: a revolute joint's spring, motor and
+/// limits, a weld's angle): Row with no linear part. Its own type, because the general row's
+/// zero direction still costs its products with the linear velocities (0 times a speed cannot be
+/// folded away in IEEE arithmetic), on the chain of dependent updates a joint's parts form.
+template <class Angular> struct AngularRow {
+  Angular angularA; ///< the axis A turns about (2D: 1)
+  Angular angularB;
+};
+
+template <class Angular, class Body>
+[[nodiscard]] inline float rowSpeed(const AngularRow<Angular>& row, const Body& a, const Body& b) {
+  return angularDot(row.angularB, b.w) - angularDot(row.angularA, a.w);
+}
+
+template <class Angular, class Mass>
+[[nodiscard]] inline float rowInverseMass(const AngularRow<Angular>& row, const Mass& m) {
+  return angularDot(row.angularA, inverseInertiaTimes(m.iA, row.angularA)) +
+         angularDot(row.angularB, inverseInertiaTimes(m.iB, row.angularB));
+}
+
+template <class Angular, class Mass> [[nodiscard]] inline float rowMass(const AngularRow<Angular>& row, const Mass& m) {
+  const float k = rowInverseMass(row, m);
+  return k > 0.0f ? 1.0f / k : 0.0f;
+}
+
+/// maxRowImpulse of an angle row: maxSpin on each arm.
+template <class Angular, class Pair>
+[[nodiscard]] inline float maxRowImpulse(const AngularRow<Angular>& row, float mass, const Pair& p) {
+  return mass * (p.maxSpin * (angularLength(row.angularA) + angularLength(row.angularB)));
+}
+
+template <class Angular, class Mass, class Body>
+inline void applyRow(const AngularRow<Angular>& row, const Mass& m, Body& a, Body& b, float impulse) {
+  a.w -= inverseInertiaTimes(m.iA, row.angularA * impulse);
+  b.w += inverseInertiaTimes(m.iB, row.angularB * impulse);
+}
+
 /// Applies an impulse (N s, or N m s for an angle row) along a row: +impulse on B, -impulse on A.
 template <class Vec, class Angular, class Mass, class Body>
 inline void applyRow(const Row<Vec, Angular>& row, const Mass& m, Body& a, Body& b, float impulse) {

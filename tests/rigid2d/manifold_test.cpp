@@ -495,8 +495,7 @@ TEST(Manifold, swapping_the_shapes_flips_the_normal) {
 // was the reference when the normal is minus one of B's face normals and clearly none of A's; a
 // point was clipped when it lies at none of the incident polygon's corners (an unclipped point
 // lies midway between a corner and the reference face).
-bool referenceIsB(const Manifold& m, const Polygon& a, const Transform2f& xa, const Polygon& b,
-                  const Transform2f& xb) {
+bool referenceIsB(const Manifold& m, const Polygon& a, const Transform2f& xa, const Polygon& b, const Transform2f& xb) {
   const auto nearest = [&](const Polygon& p, const Transform2f& x, float sign) {
     float best = 1e9f;
     for (int i = 0; i < p.count; ++i) {
