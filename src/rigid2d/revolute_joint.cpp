@@ -46,15 +46,19 @@ void warmStartJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<B
   });
 }
 
-void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
-                std::uint32_t staticIndex, const StepContext& context, bool useBias) {
+namespace {
+
+/// solveJoint for one pass, compiled once for each: the relax pass drops the point's bias
+/// altogether (no separation to compute).
+template <bool UseBias> void solvePass(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                                       std::uint32_t staticIndex, const StepContext& context) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
     const RevoluteJointSettings& def = joint.def;
     const AngleRow angle = angleRow();
     // The positions do not change within a pass: one joint angle for the spring and the limits.
     const float position = def.enableSpring || def.enableLimit ? jointAngle(joint, a, b) : 0.0f;
     if (def.enableSpring) {
-      joint.spring.solve(angle, frame, a, b, position, useBias);
+      joint.spring.solve(angle, frame, a, b, position, UseBias);
     }
     if (def.enableMotor) {
       joint.motor.solve(angle, frame, a, b, def.motorSpeed, context.h * def.maxMotorTorque);
@@ -64,13 +68,27 @@ void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyS
     }
     if (def.enableLimit) {
       joint.limit.solve(angle, frame, a, b, position, def.lowerAngle, def.upperAngle, frame.softness, context.inverseH,
-                        useBias);
+                        UseBias);
     }
     const Vec2f rA = currentAnchor(a, frame.frameA);
     const Vec2f rB = currentAnchor(b, frame.frameB);
-    const Vec2f separation = anchorSeparation(frame, a, b, rA, rB);
-    joint.point.solve(rA, rB, frame, a, b, separation, rigidRowSoftness(frame, useBias));
+    if constexpr (UseBias) {
+      joint.point.solve(rA, rB, frame, a, b, anchorSeparation(frame, a, b, rA, rB), frame.softness);
+    } else {
+      joint.point.solveRigid(rA, rB, frame, a, b);
+    }
   });
+}
+
+} // namespace
+
+void solveJoint(RevoluteJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,
+                std::uint32_t staticIndex, const StepContext& context, bool useBias) {
+  if (useBias) {
+    solvePass<true>(joint, frame, states, staticIndex, context);
+  } else {
+    solvePass<false>(joint, frame, states, staticIndex, context);
+  }
 }
 
 JointReaction jointReaction(const RevoluteJoint& joint, float inverseH) {

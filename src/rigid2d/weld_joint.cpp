@@ -31,14 +31,22 @@ void solveJoint(WeldJoint& joint, const JointFrame& frame, std::vector<BodyState
                 const StepContext& /*context*/, bool useBias) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
     const WeldJointSettings& def = joint.def;
-    const float angleError = unwindAngle(joint.startAngle + relativeAngle(b.dq, a.dq));
-    joint.angle.solve(angleRow(), frame, a, b, angleError,
-                      def.angularHertz > 0.0f ? joint.angularSoftness : rigidRowSoftness(frame, useBias));
+    // A spring (hertz > 0) acts in both passes; a rigid row has its bias in the solve pass only.
+    if (def.angularHertz > 0.0f || useBias) {
+      const float angleError = unwindAngle(joint.startAngle + relativeAngle(b.dq, a.dq));
+      joint.angle.solve(angleRow(), frame, a, b, angleError,
+                        def.angularHertz > 0.0f ? joint.angularSoftness : frame.softness);
+    } else {
+      joint.angle.solveRigid(angleRow(), frame, a, b);
+    }
     const Vec2f rA = currentAnchor(a, frame.frameA);
     const Vec2f rB = currentAnchor(b, frame.frameB);
-    const Vec2f separation = anchorSeparation(frame, a, b, rA, rB);
-    joint.point.solve(rA, rB, frame, a, b, separation,
-                      def.linearHertz > 0.0f ? joint.linearSoftness : rigidRowSoftness(frame, useBias));
+    if (def.linearHertz > 0.0f || useBias) {
+      joint.point.solve(rA, rB, frame, a, b, anchorSeparation(frame, a, b, rA, rB),
+                        def.linearHertz > 0.0f ? joint.linearSoftness : frame.softness);
+    } else {
+      joint.point.solveRigid(rA, rB, frame, a, b);
+    }
   });
 }
 

@@ -53,6 +53,14 @@ struct RowPart {
                    -bound, bound);
     applyRow(row, m, a, b, impulse - old);
   }
+  /// solve at rigidRow (the relax pass): no bias, so no error to compute.
+  template <class R, class M, class B> void solveRigid(const R& row, const M& m, B& a, B& b) {
+    const float mass = rowMass(row, m);
+    const float old = impulse;
+    const float bound = maxRowImpulse(row, mass, m);
+    impulse = std::clamp(old - mass * rowSpeed(row, a, b), -bound, bound);
+    applyRow(row, m, a, b, impulse - old);
+  }
 };
 
 /// A spring's coefficients over one substep h (SpringPart). With k = m omega^2 and

@@ -108,6 +108,20 @@ template <class Vec> struct PointPart {
     applyPoint(rA, rB, m, a, b, total - impulse);
     impulse = total;
   }
+  /// solve at rigidRow (the relax pass): the relative velocity driven to zero, no bias, so no
+  /// separation to compute. The same result as solve(..., separation, rigidRow, maxMagnitude).
+  template <class M, class B>
+  [[gnu::always_inline]] inline void solveRigid(const Vec& rA, const Vec& rB, const M& m, B& a, B& b,
+                                                float maxMagnitude = std::numeric_limits<float>::infinity()) {
+    const auto k = pointMatrix(rA, rB, m);
+    Vec total = impulse - solvePoint(k, pointSpeed(rA, rB, a, b));
+    if (const float squared = dot(total, total); squared > maxMagnitude * maxMagnitude) {
+      total = total * (maxMagnitude / std::sqrt(squared));
+    }
+    total = clampEach(total, pointImpulseBound(k, rA, rB, m));
+    applyPoint(rA, rB, m, a, b, total - impulse);
+    impulse = total;
+  }
 };
 
 } // namespace impetus::solver
