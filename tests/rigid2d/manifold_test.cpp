@@ -19,6 +19,32 @@ namespace {
 
 Transform2f at(float x, float y, float angle = 0.0f) { return {{x, y}, Rot2f::fromAngle(angle)}; }
 
+// A face clip's point ids do not tell which face was the reference (they are A's vertex and B's,
+// as Box2D v3's, the same either way), so the branches taken are read off the geometry: B's face
+// was the reference when the normal is minus one of B's face normals and clearly none of A's; a
+// point was clipped when it lies at none of the incident polygon's corners (an unclipped point
+// lies midway between a corner and the reference face).
+bool referenceIsB(const Manifold& m, const Polygon& a, const Transform2f& xa, const Polygon& b, const Transform2f& xb) {
+  const auto nearest = [&](const Polygon& p, const Transform2f& x, float sign) {
+    float best = 1e9f;
+    for (int i = 0; i < p.count; ++i) {
+      best = std::min(best, length(rotate(x.q, p.normals[static_cast<std::size_t>(i)]) * sign - m.normal));
+    }
+    return best;
+  };
+  return nearest(b, xb, -1.0f) < 1e-6f && nearest(a, xa, 1.0f) > 1e-4f;
+}
+
+bool atNoCorner(const ManifoldPoint& point, const Polygon& incident, const Transform2f& x, float tolerance) {
+  for (int i = 0; i < incident.count; ++i) {
+    const Vec2f corner = transformPoint(x, incident.vertices[static_cast<std::size_t>(i)]);
+    if (length(point.point - corner) <= 0.5f * std::abs(point.separation) + tolerance) {
+      return false;
+    }
+  }
+  return true;
+}
+
 TEST(Manifold, circles_separation_normal_and_speculative_range) {
   const Circle unit{{0, 0}, 0.5f};
   const Manifold overlap = collideCircles(unit, at(0, 0), unit, at(0.9f, 0));
@@ -48,6 +74,39 @@ TEST(Manifold, box_resting_on_box_has_two_points_along_the_face) {
   ASSERT_EQ(later.pointCount, 2);
   EXPECT_EQ(later.points[0].id, m.points[0].id);
   EXPECT_EQ(later.points[1].id, m.points[1].id);
+}
+
+// Two equal boxes stacked half a box apart (a pyramid's rows), the upper one turned by a hair
+// either way: the reference face passes from one box to the other as the turn changes sign, and
+// each physical point (the same pair of corners and edges) keeps its id, so its warm start
+// survives the change (Box2D v3's ids: A's vertex and B's at the point's end).
+TEST(Manifold, a_point_keeps_its_id_when_the_reference_face_changes_sides) {
+  const Polygon box = makeBox(0.5f, 0.5f);
+  int changes = 0;
+  Manifold previous{};
+  bool previousOnB = false;
+  for (int k = -20; k <= 20; ++k) {
+    const float turn = 1e-4f * static_cast<float>(k);
+    const Transform2f xa = at(0, 0);
+    const Transform2f xb = at(0.5f, 0.999f, turn);
+    const Manifold m = collidePolygons(box, xa, box, xb);
+    ASSERT_EQ(m.pointCount, 2) << k;
+    const bool onB = referenceIsB(m, box, xa, box, xb);
+    if (k > -20 && onB != previousOnB) {
+      ++changes;
+      // The points (in either order) at the same places carry the same ids.
+      for (int i = 0; i < 2; ++i) {
+        const ManifoldPoint& p = m.points[static_cast<std::size_t>(i)];
+        const ManifoldPoint& q =
+            length(p.point - previous.points[0].point) < 1e-3f ? previous.points[0] : previous.points[1];
+        ASSERT_LT(length(p.point - q.point), 1e-3f) << k;
+        EXPECT_EQ(p.id, q.id) << k;
+      }
+    }
+    previous = m;
+    previousOnB = onB;
+  }
+  EXPECT_GE(changes, 1); // the sweep did cross from one box's face to the other's
 }
 
 TEST(Manifold, tilted_box_touches_with_one_corner) {
@@ -489,33 +548,6 @@ TEST(Manifold, swapping_the_shapes_flips_the_normal) {
 // give the general path's manifold: the same points, features and reference face, and the same
 // floats within 1e-5 of the scale. The shortcuts are built to run the same float operations
 // as the general path (fewer of them), so in fact not one float may differ: counted apart.
-//
-// A face clip's point ids do not tell which face was the reference (they are A's vertex and B's,
-// as Box2D v3's, the same either way), so the branches taken are read off the geometry: B's face
-// was the reference when the normal is minus one of B's face normals and clearly none of A's; a
-// point was clipped when it lies at none of the incident polygon's corners (an unclipped point
-// lies midway between a corner and the reference face).
-bool referenceIsB(const Manifold& m, const Polygon& a, const Transform2f& xa, const Polygon& b, const Transform2f& xb) {
-  const auto nearest = [&](const Polygon& p, const Transform2f& x, float sign) {
-    float best = 1e9f;
-    for (int i = 0; i < p.count; ++i) {
-      best = std::min(best, length(rotate(x.q, p.normals[static_cast<std::size_t>(i)]) * sign - m.normal));
-    }
-    return best;
-  };
-  return nearest(b, xb, -1.0f) < 1e-6f && nearest(a, xa, 1.0f) > 1e-4f;
-}
-
-bool atNoCorner(const ManifoldPoint& point, const Polygon& incident, const Transform2f& x, float tolerance) {
-  for (int i = 0; i < incident.count; ++i) {
-    const Vec2f corner = transformPoint(x, incident.vertices[static_cast<std::size_t>(i)]);
-    if (length(point.point - corner) <= 0.5f * std::abs(point.separation) + tolerance) {
-      return false;
-    }
-  }
-  return true;
-}
-
 struct ShortcutChecker {
   int checked = 0;
   std::array<int, 3> pointCounts{};
