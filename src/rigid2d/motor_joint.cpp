@@ -30,6 +30,7 @@ void prepareJoint(MotorJoint& joint, const JointFrame& frame, const JointPose& p
   joint.originB = -rotate(pose.qB, pose.localCenterB);
   joint.targetA = originA + rotate(pose.qA, def.linearOffset);
   joint.angleError = unwindAngle(frame.deltaAngle - def.angularOffset);
+  joint.linear.prepare(joint.targetA, joint.originB, frame);
 }
 
 void warmStartJoint(MotorJoint& joint, const JointFrame& frame, std::vector<BodyState>& states,

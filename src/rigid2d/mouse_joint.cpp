@@ -19,6 +19,7 @@ namespace impetus::rigid2d::detail {
 
 void prepareJoint(MouseJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context) {
   joint.targetOffset = pose.centerB - joint.def.target;
+  joint.linear.prepare({}, frame.frameB, frame);
   joint.linearSoftness = makeSoft(joint.def.hertz, joint.def.dampingRatio, context.h);
   // The damper's implicit impulse over a substep: the accumulated impulse P must equal
   // -I rate h w_after, which solved for the change gives a soft constraint without bias, with

@@ -30,6 +30,7 @@ float axialImpulse(const RevoluteJoint& joint) {
 void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const JointPose& /*pose*/,
                   const StepContext& context) {
   joint.angleAtStart = unwindAngle(frame.deltaAngle - joint.def.referenceAngle);
+  joint.point.prepare(frame.frameA, frame.frameB, frame);
   joint.spring.prepare(joint.def.enableSpring ? joint.def.hertz : 0.0f, joint.def.dampingRatio, context.h);
   clearSwitchedOffImpulses(joint);
   if (joint.def.frictionTorque == 0.0f) {

@@ -15,6 +15,7 @@ namespace impetus::rigid2d::detail {
 
 void prepareJoint(WeldJoint& joint, const JointFrame& frame, const JointPose& /*pose*/, const StepContext& context) {
   joint.startAngle = unwindAngle(frame.deltaAngle - joint.def.referenceAngle);
+  joint.point.prepare(frame.frameA, frame.frameB, frame);
   joint.linearSoftness = makeSoft(joint.def.linearHertz, joint.def.linearDampingRatio, context.h);
   joint.angularSoftness = makeSoft(joint.def.angularHertz, joint.def.angularDampingRatio, context.h);
 }

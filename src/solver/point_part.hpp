@@ -86,6 +86,14 @@ template <class Pair>
 /// magnitude (a drive of bounded force). Owns its accumulated impulse (N s per substep).
 template <class Vec> struct PointPart {
   Vec impulse{};
+  /// Each axis' largest impulse this step (pointImpulseBound at the step's anchors: a bound on
+  /// runaway impulses, which the anchors' turn within a step cannot make matter).
+  Vec bound{};
+
+  /// The step's bound, from the anchors at its start.
+  template <class M> void prepare(const Vec& rA, const Vec& rB, const M& m) {
+    bound = pointImpulseBound(pointMatrix(rA, rB, m), rA, rB, m);
+  }
 
   template <class M, class B> void warmStart(const Vec& rA, const Vec& rB, const M& m, B& a, B& b) const {
     applyPoint(rA, rB, m, a, b, impulse);
@@ -104,7 +112,7 @@ template <class Vec> struct PointPart {
     if (const float squared = dot(total, total); squared > maxMagnitude * maxMagnitude) {
       total = total * (maxMagnitude / std::sqrt(squared));
     }
-    total = clampEach(total, pointImpulseBound(k, rA, rB, m));
+    total = clampEach(total, bound);
     applyPoint(rA, rB, m, a, b, total - impulse);
     impulse = total;
   }
@@ -118,7 +126,7 @@ template <class Vec> struct PointPart {
     if (const float squared = dot(total, total); squared > maxMagnitude * maxMagnitude) {
       total = total * (maxMagnitude / std::sqrt(squared));
     }
-    total = clampEach(total, pointImpulseBound(k, rA, rB, m));
+    total = clampEach(total, bound);
     applyPoint(rA, rB, m, a, b, total - impulse);
     impulse = total;
   }
