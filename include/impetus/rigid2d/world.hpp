@@ -5,7 +5,8 @@
 // `substeps` times: integrate velocities (gravity, damping, forces), warm start, solve the soft
 // contact constraints with bias (they push overlap apart at a bounded speed, springy at
 // contactHertz with contactDampingRatio), integrate positions, and relax (solve again without
-// bias, removing the energy the bias added). Restitution acts within those passes, as an
+// bias, removing the energy the bias added; friction and rolling resistance are solved here
+// only, as in Box2D v3.2). Restitution acts within those passes, as an
 // impact at each point that meets faster than restitutionThreshold (so a struck row of touching
 // bodies passes the impulse along, Newton's cradle). Everything runs in a fixed order:
 // the same inputs give bit-identical results.
