@@ -73,6 +73,21 @@ struct SolvedPoint {
   float impactSpeed = 0.0f;
 };
 
+/// Keeps a contact's impulses for the next warm start: its points' and, where the solve may have
+/// changed it (`rollingSolved`, see storeContact), its rolling impulse.
+[[gnu::always_inline]] static inline void storeContactImpulses(Contact& contact,
+                                                               const std::array<SolvedPoint, 2>& points,
+                                                               float rollingImpulse, bool rollingSolved) {
+  for (int k = 0; k < contact.manifold.pointCount; ++k) {
+    ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(k)];
+    mp.normalImpulse = points[static_cast<std::size_t>(k)].normalImpulse;
+    mp.tangentImpulse = points[static_cast<std::size_t>(k)].tangentImpulse;
+  }
+  if (rollingSolved) {
+    contact.rollingImpulse = rollingImpulse;
+  }
+}
+
 /// Keeps a contact's impulses for the next warm start and notes its fastest impact; returns
 /// whether that may raise a hit event (approachMayHit). It writes only the record's store line
 /// (Contact) as a rule: the fastest impact only where it may be a hit (the hit pass reads it only
@@ -80,20 +95,15 @@ struct SolvedPoint {
 /// `rollingSolved`, or no warm start, which began it from zero).
 [[gnu::always_inline]] static inline bool storeContact(Contact& contact, const std::array<SolvedPoint, 2>& points,
                                                        float rollingImpulse, bool rollingSolved, float hitThreshold) {
+  storeContactImpulses(contact, points, rollingImpulse, rollingSolved);
   float approach = 0.0f;
   int fastest = 0;
   for (int k = 0; k < contact.manifold.pointCount; ++k) {
     const SolvedPoint& p = points[static_cast<std::size_t>(k)];
-    ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(k)];
-    mp.normalImpulse = p.normalImpulse;
-    mp.tangentImpulse = p.tangentImpulse;
     if (p.maxNormalImpulse > 0.0f && p.impactSpeed > approach) {
       approach = p.impactSpeed;
       fastest = k;
     }
-  }
-  if (rollingSolved) {
-    contact.rollingImpulse = rollingImpulse;
   }
   const bool hit = approachMayHit(approach, hitThreshold);
   if (hit) {

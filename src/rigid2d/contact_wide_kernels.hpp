@@ -425,16 +425,11 @@ void storeBatch(const void* batches, std::uint32_t batch, WorldState& w, const s
       if (slot == noContact) {
         continue;
       }
-      Contact& contact = w.contacts[slot];
-      for (int k = 0; k < contact.manifold.pointCount; ++k) {
-        const ContactConstraintWide::Point& p = wc.points[static_cast<std::size_t>(k)];
-        ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(k)];
-        mp.normalImpulse = lane(p.normalImpulse, i);
-        mp.tangentImpulse = lane(p.tangentImpulse, i);
-      }
-      if (lane(wc.rollingMass, i) != 0.0f || !warm) {
-        contact.rollingImpulse = lane(wc.rollingImpulse, i);
-      }
+      const std::array<SolvedPoint, 2> points{
+          SolvedPoint{lane(wc.points[0].normalImpulse, i), lane(wc.points[0].tangentImpulse, i)},
+          SolvedPoint{lane(wc.points[1].normalImpulse, i), lane(wc.points[1].tangentImpulse, i)}};
+      storeContactImpulses(w.contacts[slot], points, lane(wc.rollingImpulse, i),
+                           lane(wc.rollingMass, i) != 0.0f || !warm);
     }
     return;
   }

@@ -108,21 +108,22 @@ template <class Vec> struct PointPart {
                                            float maxMagnitude = std::numeric_limits<float>::infinity()) {
     const auto k = pointMatrix(rA, rB, m);
     const Vec target = pointSpeed(rA, rB, a, b) + biasSpeed(soft, separation);
-    Vec total = impulse - solvePoint(k, target) * soft.massScale - impulse * soft.impulseScale;
-    if (const float squared = dot(total, total); squared > maxMagnitude * maxMagnitude) {
-      total = total * (maxMagnitude / std::sqrt(squared));
-    }
-    total = clampEach(total, bound);
-    applyPoint(rA, rB, m, a, b, total - impulse);
-    impulse = total;
+    accumulate(rA, rB, m, a, b, impulse - solvePoint(k, target) * soft.massScale - impulse * soft.impulseScale,
+               maxMagnitude);
   }
   /// solve at rigidRow (the relax pass): the relative velocity driven to zero, no bias, so no
   /// separation to compute. The same result as solve(..., separation, rigidRow, maxMagnitude).
   template <class M, class B>
   [[gnu::always_inline]] inline void solveRigid(const Vec& rA, const Vec& rB, const M& m, B& a, B& b,
                                                 float maxMagnitude = std::numeric_limits<float>::infinity()) {
-    const auto k = pointMatrix(rA, rB, m);
-    Vec total = impulse - solvePoint(k, pointSpeed(rA, rB, a, b));
+    accumulate(rA, rB, m, a, b, impulse - solvePoint(pointMatrix(rA, rB, m), pointSpeed(rA, rB, a, b)), maxMagnitude);
+  }
+
+private:
+  /// The new accumulated impulse, held within maxMagnitude and each axis' bound, applied as the
+  /// change from the old.
+  template <class M, class B> [[gnu::always_inline]] inline void accumulate(const Vec& rA, const Vec& rB, const M& m,
+                                                                            B& a, B& b, Vec total, float maxMagnitude) {
     if (const float squared = dot(total, total); squared > maxMagnitude * maxMagnitude) {
       total = total * (maxMagnitude / std::sqrt(squared));
     }
