@@ -313,10 +313,11 @@ inline void closestPointsContact(const Apart& apart, const Transform2f& xfA, con
 
 /// The reference face: A's unless B's is clearly better (by 0.1 linearSlop: the hysteresis keeps
 /// the choice, and so the normal, from flickering between two nearly parallel faces of equal
-/// separation; the points keep their ids either way, clipPointId). With the cores apart, the hysteresis' face is kept
-/// only when it is nearly parallel to the best face (normals within 4.5 mrad of opposite: a face contact measured along
-/// it is then deeper by a factor 1 / cos of the angle, at most 1 + 1e-5); otherwise the best face is taken: its closest
-/// points are over it (a face contact), and a face at an angle to it clipped the incident edge far from them (a
+/// separation; the points keep their ids either way, clipPointId). With the cores apart, the
+/// hysteresis' face is kept only when it is nearly parallel to the best face (normals within
+/// 4.5 mrad of opposite: a face contact measured along it is then deeper by a factor 1 / cos of
+/// the angle, at most 1 + 1e-5); otherwise the best face is taken: its closest points are over it
+/// (a face contact), and a face at an angle to it clipped the incident edge far from them (a
 /// capsule's side within the hysteresis of a segment's face, 76 degrees apart, was 1.4 mm off).
 [[gnu::always_inline]] inline bool referenceIsB(const Vec2f& normalA, const Vec2f& normalB, const EdgeSeparation& sa,
                                                 const EdgeSeparation& sb, const Apart* apart) {

@@ -59,9 +59,9 @@ template <class Vec, class Angular, class Mass>
          preciseAngularDot(i.angularB, inverseInertiaTimes(m.iB, j.angularB));
 }
 
-/// The effective mass of a row (kg or kg m^2), zero when neither body can move along it.
-template <class Vec, class Angular, class Mass>
-[[nodiscard]] inline float rowMass(const Row<Vec, Angular>& row, const Mass& m) {
+/// The effective mass of a row (kg or kg m^2), zero when neither body can move along it. `R` is
+/// a Row or an AngularRow (rowInverseMass of either).
+template <class R, class Mass> [[nodiscard]] inline float rowMass(const R& row, const Mass& m) {
   const float k = rowInverseMass(row, m);
   return k > 0.0f ? 1.0f / k : 0.0f;
 }
@@ -97,11 +97,6 @@ template <class Angular, class Mass>
 [[nodiscard]] inline float rowInverseMass(const AngularRow<Angular>& row, const Mass& m) {
   return angularDot(row.angularA, inverseInertiaTimes(m.iA, row.angularA)) +
          angularDot(row.angularB, inverseInertiaTimes(m.iB, row.angularB));
-}
-
-template <class Angular, class Mass> [[nodiscard]] inline float rowMass(const AngularRow<Angular>& row, const Mass& m) {
-  const float k = rowInverseMass(row, m);
-  return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
 /// maxRowImpulse of an angle row: maxSpin on each arm.
