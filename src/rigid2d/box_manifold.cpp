@@ -251,6 +251,7 @@ void collideBoxes(const Polygon& a, const Transform2f& xfA, const Polygon& b, co
   const Vec2f a2 = a.vertices[2]; // upper right
   const EdgeSeparation sa = firstLargest({a0.y - upper.y, lower.x - a2.x, lower.y - a2.y, a0.x - upper.x});
   if (sa.separation > speculativeDistance) {
+    m.separationBound = sa.separation;
     return;
   }
   // B's faces: the deepest of A's corners along each normal (collideRectangle). Each of the
@@ -265,6 +266,7 @@ void collideBoxes(const Polygon& a, const Transform2f& xfA, const Polygon& b, co
   }
   const EdgeSeparation sb = firstLargest(sbs);
   if (sb.separation > speculativeDistance) {
+    m.separationBound = sb.separation;
     return;
   }
   // clipContact's vertex contact for cores apart (boxes have area: their separating-axis test is

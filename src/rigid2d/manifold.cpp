@@ -50,6 +50,7 @@ Manifold collideCircles(const Circle& a, const Transform2f& xfA, const Circle& b
   const float dist = distance(pa, pb);
   const float separation = dist - a.radius - b.radius;
   if (separation > speculativeDistance) {
+    m.separationBound = separation;
     return m;
   }
   // Centres closer than minNormalDistance have no direction between them (any normal is right
@@ -111,6 +112,9 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform2f& xfA, const
     }
   }
   if (separation > speculativeDistance) {
+    // The centre's distance from the face's line (or its vertex), less the radii: at most its
+    // distance from the polygon.
+    m.separationBound = separation;
     return m;
   }
   m.normal = rotate(xfA.q, normal);

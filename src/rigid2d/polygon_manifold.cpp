@@ -31,10 +31,12 @@ void collideGeneral(const Polygon& a, const Transform2f& xfA, const Polygon& b, 
   const float radius = a.radius + b.radius;
   const EdgeSeparation sa = maxSeparation(pa, pb);
   if (sa.separation - radius > speculativeDistance) {
+    m.separationBound = sa.separation - radius;
     return;
   }
   const EdgeSeparation sb = maxSeparation(pb, pa);
   if (sb.separation - radius > speculativeDistance) {
+    m.separationBound = sb.separation - radius;
     return;
   }
   clipContact<0, 0>(pa, a.radius, pb, b.radius, sa, sb, xfA, xfB, m);
@@ -91,6 +93,7 @@ void collideRectangle(const Polygon& a, const Transform2f& xfA, const Polygon& b
     }
   }
   if (sa.separation - radius > speculativeDistance) {
+    m.separationBound = sa.separation - radius;
     return;
   }
   const Vec2f aLower{std::min(a.vertices[0].x, a.vertices[2].x), std::min(a.vertices[0].y, a.vertices[2].y)};
@@ -106,6 +109,7 @@ void collideRectangle(const Polygon& a, const Transform2f& xfA, const Polygon& b
     }
   }
   if (sb.separation - radius > speculativeDistance) {
+    m.separationBound = sb.separation - radius;
     return;
   }
   clipContact<4, CountB>(view(a), a.radius, {vertices.data(), normals.data(), countB}, b.radius, sa, sb, xfA, xfB, m);

@@ -230,6 +230,7 @@ inline void pointContact(const CoreClosest& c, const FacePair& f, float toleranc
                          const Transform2f& xfB, Manifold& m) {
   const float separation = c.distance - f.rRef - f.rInc;
   if (separation > speculativeDistance) {
+    m.separationBound = separation;
     return;
   }
   const Vec2f dir = c.distance > tolerance ? (c.onIncident - c.onReference) / c.distance : f.n; // to the incident

@@ -31,7 +31,7 @@ using detail::Shape;
 using detail::WorldState;
 
 constexpr std::uint32_t snapshotMagic = 0x53443249; // "I2DS"
-constexpr std::uint32_t snapshotVersion = 7;
+constexpr std::uint32_t snapshotVersion = 8;
 
 static_assert(std::is_trivially_copyable_v<Contact>);
 static_assert(std::is_trivially_copyable_v<Joint>);

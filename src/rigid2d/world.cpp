@@ -133,12 +133,26 @@ float rollingRadius(const Shape& s) {
   return 0.0f;
 }
 
-/// Polygons, segments and chain segments without rounding: every contact point is a corner or
-/// lies on a flat face, fixed in its body, so a manifold may be carried with the bodies. (A round
-/// surface's contact point is not fixed in its body: carried, it would turn with a rolling ball
-/// and push it on.)
-bool hasSharpCorners(const Shape& s) {
-  return !std::holds_alternative<Circle>(s.geometry) && s.collisionPolygon.radius == 0.0f;
+/// How far a shape's surface lies out from its core, m: a circle's radius, a capsule's, a rounded
+/// polygon's (0 for sharp polygons and segments). Manifold reuse carries the cores.
+float roundingRadius(const Shape& s) {
+  if (const auto* circle = std::get_if<Circle>(&s.geometry)) {
+    return circle->radius;
+  }
+  return s.collisionPolygon.radius;
+}
+
+/// How far a shape reaches from its body's origin, m: the farthest of its surface's points.
+float reachFromOrigin(const Shape& s) {
+  if (const auto* circle = std::get_if<Circle>(&s.geometry)) {
+    return length(circle->center) + circle->radius;
+  }
+  const Polygon& p = s.collisionPolygon;
+  float reach = 0.0f;
+  for (int i = 0; i < p.count; ++i) {
+    reach = std::max(reach, length(p.vertices[static_cast<std::size_t>(i)]));
+  }
+  return reach + p.radius;
 }
 
 void createContact(WorldState& w, std::uint64_t key) {
@@ -167,7 +181,10 @@ void createContact(WorldState& w, std::uint64_t key) {
   c.sensor = a.sensor || b.sensor;
   c.preSolve = !c.sensor && (a.preSolve || b.preSolve);
   // A carried manifold skips the collide pass, where the pre-solve callback is asked.
-  c.reusable = hasSharpCorners(a) && hasSharpCorners(b) && !c.preSolve;
+  c.reusable = !c.preSolve;
+  c.frame.radiusA = roundingRadius(a);
+  c.frame.radiusB = roundingRadius(b);
+  c.frame.reachB = reachFromOrigin(b);
   c.alive = true;
   w.contactByPair.insert(key, slot);
   // At the head of both bodies' lists.
@@ -338,6 +355,9 @@ void collideContacts(WorldState& w) {
       }
       const Body& bodyA = w.bodies[contact.bodyA];
       const Body& bodyB = w.bodies[contact.bodyB];
+      if (contact.manifold.pointCount == 0 && staysApart(contact, bodyA.transform, bodyB.transform)) {
+        continue; // still apart: nothing to collide, nothing changed
+      }
       const bool sleeper = !contact.sensor && (asleep(bodyA) || asleep(bodyB));
       if (reuseDistance > 0.0f && contact.reusable && contact.manifold.pointCount > 0 &&
           carryManifold(contact, bodyA.transform, bodyB.transform, reuseDistance, reuseTurnSine)) {
@@ -354,6 +374,8 @@ void collideContacts(WorldState& w) {
       const bool touching = contact.manifold.pointCount > 0;
       if (touching) {
         recordManifoldFrame(contact, bodyA.transform, bodyB.transform);
+      } else {
+        recordSeparation(contact, bodyA.transform, bodyB.transform);
       }
       const bool wasTouching = old.pointCount > 0;
       if (touching != wasTouching) {

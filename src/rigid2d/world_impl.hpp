@@ -112,16 +112,28 @@ struct Body {
   return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
 }
 
-/// A touching manifold as it was computed, fixed in the two bodies: each point's surface point
-/// on A (in A's frame) and on B (in B's frame), the separation and normal then, and the bodies'
-/// relative rotation then. While the bodies move less than the world's reuse tolerances
-/// relative to each other, the manifold is carried along with them instead of computed again
-/// (manifold_reuse.cpp).
+/// A touching manifold as it was computed, fixed in the two bodies: each point's core point on A
+/// (in A's frame) and on B (in B's frame), the cores' separation and the normal then, and the
+/// bodies' relative rotation then. A core point is the surface point moved in by the shape's
+/// rounding radius along the normal (a circle's: its centre): it is a material point of the
+/// body, where a round surface's contact point is not. While the bodies move less than the
+/// world's reuse tolerances relative to each other, the manifold is carried along with them
+/// instead of computed again (manifold_reuse.cpp).
+///
+/// A pair apart (no points) is noted too: B's pose in A's frame and the manifold's
+/// separationBound then. While B's shape has moved less than the bound less speculativeDistance
+/// relative to A, the pair cannot touch, and is not collided again (manifold_reuse.cpp).
 struct ManifoldFrame {
   std::array<Vec2f, 2> localA{}, localB{};
-  std::array<float, 2> separation{};
-  Vec2f localNormal; ///< A's frame
+  std::array<float, 2> coreSeparation{}; ///< m
+  Vec2f localNormal;                     ///< A's frame
   Rot2f relativeRotation = Rot2f::identity();
+  float radiusA = 0.0f, radiusB = 0.0f; ///< the shapes' rounding radii (a circle's radius), m
+  /// How far B's shape reaches from B's origin, m: the most any of its points moves when B
+  /// turns by an angle t relative to A is this times the chord 2 sin(t / 2).
+  float reachB = 0.0f;
+  Vec2f relativePosition;       ///< apart: B's origin in A's frame then, m
+  float separationBound = 0.0f; ///< apart: the manifold's separationBound then, m
 };
 
 /// A pair of shapes whose fat boxes overlap: touching when its manifold has points.
@@ -137,7 +149,7 @@ struct alignas(64) Contact {
   std::uint32_t bodyB = 0;
   bool sensor = false;   ///< either shape is a sensor: events only, no response
   bool preSolve = false; ///< either shape asks the pre-solve callback
-  bool reusable = false; ///< both shapes have sharp corners: the manifold may be carried (manifold_reuse.cpp)
+  bool reusable = false; ///< no pre-solve callback: the manifold may be carried (manifold_reuse.cpp)
   bool alive = false;
   float friction = 0.0f;
   float restitution = 0.0f;
@@ -396,6 +408,11 @@ void bodyContacts(const WorldState& w, std::uint32_t body, std::vector<std::uint
 
 /// Notes a freshly computed manifold's points in its bodies' frames (Contact::frame).
 void recordManifoldFrame(Contact& contact, const Transform2f& xfA, const Transform2f& xfB);
+/// Notes a pair apart (its manifold has no points) at (xfA, xfB), for staysApart.
+void recordSeparation(Contact& contact, const Transform2f& xfA, const Transform2f& xfB);
+/// Whether a pair apart when noted is still farther apart than speculativeDistance at (xfA, xfB)
+/// (B moved less than the noted bound allows, relative to A): colliding it would find nothing.
+[[nodiscard]] bool staysApart(const Contact& contact, const Transform2f& xfA, const Transform2f& xfB);
 /// Carries the contact's manifold along with its bodies when, since it was computed, each point's
 /// surfaces moved less than `maxDistance` (m) relative to each other and the bodies turned
 /// relative to each other by an angle whose sine is under `maxTurnSine`: new points, anchors,

@@ -59,6 +59,133 @@ TEST(ManifoldReuse, a_carried_manifold_matches_a_fresh_one_within_the_tolerance)
       detail::carryManifold(far, xfA, mul(xfA, at(1.0f, 0.99f, pi<float> / 180.0f)), 0.001f, std::sin(0.0087f)));
 }
 
+// A ball resting on a slab: carried while its centre moves less than the tolerance across,
+// however it turns, its contact stays straight under the centre (no lever arm for the slab's
+// push), and matches a fresh manifold's separation and point.
+TEST(ManifoldReuse, a_carried_ball_contact_stays_under_the_ball_however_it_turns) {
+  const Polygon ground = makeBox(5.0f, 0.5f);
+  const Circle ball{{}, 0.25f};
+  const Transform2f xfA = at(0.3f, -0.2f, 0.05f);
+  const Transform2f start = mul(xfA, at(1.0f, 0.749f));
+  detail::Contact c;
+  c.frame.radiusB = ball.radius;
+  c.manifold = collidePolygonAndCircle(ground, xfA, ball, start);
+  ASSERT_EQ(c.manifold.pointCount, 1);
+  detail::recordManifoldFrame(c, xfA, start);
+  // 0.4 mm across, 0.2 mm down, a quarter degree turned (within half a degree).
+  const Transform2f moved = mul(xfA, at(1.0004f, 0.7488f, 0.25f * pi<float> / 180.0f));
+  ASSERT_TRUE(detail::carryManifold(c, xfA, moved, 0.001f, std::sin(0.0087f)));
+  const Manifold fresh = collidePolygonAndCircle(ground, xfA, ball, moved);
+  ASSERT_EQ(fresh.pointCount, 1);
+  const ManifoldPoint& p = c.manifold.points[0];
+  const ManifoldPoint& q = fresh.points[0];
+  EXPECT_NEAR(p.separation, q.separation, 2e-6f);
+  EXPECT_LT(distance(p.point, q.point), 2e-6f);
+  // The point relative to the ball's centre lies along the normal: the push has no lever arm.
+  EXPECT_LT(std::abs(cross(p.anchorB, c.manifold.normal)), 1e-6f);
+  // The centre 2 mm across: computed again.
+  EXPECT_FALSE(detail::carryManifold(c, xfA, mul(xfA, at(1.002f, 0.749f)), 0.001f, std::sin(0.0087f)));
+}
+
+// A rounded box (corners of radius 5 cm) resting on a slab: carried by its cores' corners, its
+// two points match a fresh manifold's.
+TEST(ManifoldReuse, a_carried_rounded_box_matches_a_fresh_manifold) {
+  const Polygon ground = makeBox(5.0f, 0.5f);
+  const std::array<Vec2f, 4> corners{{{-0.45f, -0.45f}, {0.45f, -0.45f}, {0.45f, 0.45f}, {-0.45f, 0.45f}}};
+  const Polygon rounded = makePolygon(corners, 0.05f);
+  const Transform2f xfA = at(0.3f, -0.2f, 0.05f);
+  const Transform2f start = mul(xfA, at(1.0f, 0.999f));
+  detail::Contact c;
+  c.frame.radiusB = rounded.radius;
+  c.manifold = collidePolygons(ground, xfA, rounded, start);
+  ASSERT_EQ(c.manifold.pointCount, 2);
+  detail::recordManifoldFrame(c, xfA, start);
+  const Transform2f moved = mul(xfA, at(1.0003f, 0.9986f, 0.03f * pi<float> / 180.0f));
+  ASSERT_TRUE(detail::carryManifold(c, xfA, moved, 0.001f, std::sin(0.0087f)));
+  const Manifold fresh = collidePolygons(ground, xfA, rounded, moved);
+  ASSERT_EQ(fresh.pointCount, 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const ManifoldPoint& p = c.manifold.points[k];
+    const ManifoldPoint& q = fresh.points[k];
+    EXPECT_EQ(p.id, q.id);
+    EXPECT_NEAR(p.separation, q.separation, 2e-6f) << k;
+    // Under the corners' centres, which moved with the box: within float rounding of fresh.
+    EXPECT_LT(distance(p.point, q.point), 1e-5f) << k;
+  }
+}
+
+/// How far a polygon reaches from its frame's origin (ManifoldFrame::reachB), m.
+float reachOf(const Polygon& p) {
+  float reach = 0.0f;
+  for (int i = 0; i < p.count; ++i) {
+    reach = std::max(reach, length(p.vertices[static_cast<std::size_t>(i)]));
+  }
+  return reach + p.radius;
+}
+
+// A pair noted apart is not collided again while B's shape moved less than the gap allows; the
+// collision it skips must find nothing. Swept over shape pairs, gaps, moves and turns: every pair
+// that staysApart says cannot touch has no points when collided, and the bound is not so loose
+// that it never lets a pair go uncollided.
+TEST(ManifoldReuse, a_pair_kept_apart_would_have_collided_to_nothing) {
+  const Polygon box = makeBox(0.5f, 0.5f);
+  const Polygon slab = makeBox(5.0f, 0.5f);
+  const std::array<Vec2f, 6> hexagonPoints{
+      {{0.4f, 0.0f}, {0.2f, 0.35f}, {-0.2f, 0.35f}, {-0.4f, 0.0f}, {-0.2f, -0.35f}, {0.2f, -0.35f}}};
+  const Polygon hexagon = makePolygon(hexagonPoints, 0.0f);
+  const Polygon roundedHexagon = makePolygon(hexagonPoints, 0.1f);
+  const Polygon capsule = asPolygon(Capsule{{-0.4f, 0.0f}, {0.4f, 0.0f}, 0.15f});
+  const Polygon ball = asPolygon(Circle{{0.1f, 0.0f}, 0.3f}); // off its body's origin
+  const std::array<Polygon, 6> shapes{box, slab, hexagon, roundedHexagon, capsule, ball};
+  const auto collideAny = [](const Polygon& a, const Transform2f& xfA, const Polygon& b, const Transform2f& xfB) {
+    if (b.count == 1) {
+      const Circle circle{b.vertices[0], b.radius};
+      return a.count == 1 ? collideCircles({a.vertices[0], a.radius}, xfA, circle, xfB)
+                          : collidePolygonAndCircle(a, xfA, circle, xfB);
+    }
+    return collidePolygons(a, xfA, b, xfB);
+  };
+  int kept = 0, collidedAgain = 0;
+  std::uint32_t seed = 12345;
+  const auto uniform = [&seed](float lo, float hi) {
+    seed = seed * 1664525u + 1013904223u;
+    return lo + (hi - lo) * static_cast<float>(seed >> 8) / static_cast<float>(1u << 24);
+  };
+  for (const Polygon& a : shapes) {
+    if (a.count == 1) {
+      continue; // circles go second (collidePolygonAndCircle's order)
+    }
+    for (const Polygon& b : shapes) {
+      for (int trial = 0; trial < 200; ++trial) {
+        const Transform2f xfA = at(uniform(-1.0f, 1.0f), uniform(-1.0f, 1.0f), uniform(-3.0f, 3.0f));
+        const Transform2f xfB = mul(xfA, at(uniform(-2.0f, 2.0f), uniform(-2.0f, 2.0f), uniform(-3.0f, 3.0f)));
+        detail::Contact c;
+        c.manifold = collideAny(a, xfA, b, xfB);
+        if (c.manifold.pointCount > 0) {
+          continue;
+        }
+        c.frame.reachB = reachOf(b);
+        detail::recordSeparation(c, xfA, xfB);
+        for (int move = 0; move < 20; ++move) {
+          const float step = uniform(0.0f, 0.3f);
+          const Transform2f movedB =
+              mul(xfB, at(uniform(-step, step), uniform(-step, step), uniform(-0.5f, 0.5f) * step));
+          const Transform2f movedA =
+              mul(xfA, at(uniform(-step, step), uniform(-step, step), uniform(-0.5f, 0.5f) * step));
+          if (detail::staysApart(c, movedA, movedB)) {
+            ++kept;
+            ASSERT_EQ(collideAny(a, movedA, b, movedB).pointCount, 0) << "shapes " << a.count << ", " << b.count;
+          } else {
+            ++collidedAgain;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(kept, 1000);
+  EXPECT_GT(collidedAgain, 1000);
+}
+
 BodyId addBox(World& world, const Vec2f& position, float half, float friction = 0.6f) {
   BodyDef def;
   def.type = BodyType::dynamicBody;
@@ -102,9 +229,9 @@ TEST(ManifoldReuse, a_sliding_box_stops_where_coulomb_friction_says) {
   }
 }
 
-// Round shapes never carry their manifolds: a ball's contact point does not turn with it (a
-// carried one would, and the support under it would spin the ball on). A ball resting a
-// millimetre off the middle of a box stays there.
+// A round shape's manifold is carried by its core (a ball's centre), not its surface point,
+// which does not turn with the ball (a point that did would put the support's push off the
+// centre and roll the ball on). A ball resting a millimetre off the middle of a box stays there.
 TEST(ManifoldReuse, a_ball_resting_on_a_box_does_not_start_rolling) {
   WorldDef def;
   def.enableSleep = false;
@@ -121,6 +248,35 @@ TEST(ManifoldReuse, a_ball_resting_on_a_box_does_not_start_rolling) {
   }
   EXPECT_LT(std::abs(world.position(ball).x + 0.001f), 1e-3f);
   EXPECT_LT(std::abs(world.angularVelocity(ball)), 1e-2f);
+}
+
+// Capsules carried by their cores: a capsule lying on the ground and a shorter one lying on it,
+// off its middle, stay where they settle, 10 s on.
+TEST(ManifoldReuse, capsules_resting_on_each_other_stay_put) {
+  WorldDef def;
+  def.enableSleep = false;
+  World world(def);
+  addGround(world);
+  BodyDef bodyDef;
+  bodyDef.type = BodyType::dynamicBody;
+  bodyDef.position = {0.0f, 0.2f};
+  const BodyId lower = world.createBody(bodyDef);
+  world.createShape(lower, {}, Capsule{{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.2f});
+  bodyDef.position = {0.15f, 0.6f};
+  const BodyId upper = world.createBody(bodyDef);
+  world.createShape(upper, {}, Capsule{{-0.3f, 0.0f}, {0.3f, 0.0f}, 0.2f});
+  for (int i = 0; i < 60; ++i) {
+    world.step(1.0f / 60.0f);
+  }
+  const Vec2f lowerAt = world.position(lower);
+  const Vec2f upperAt = world.position(upper);
+  for (int i = 0; i < 600; ++i) {
+    world.step(1.0f / 60.0f);
+  }
+  EXPECT_LT(distance(world.position(lower), lowerAt), 1e-3f);
+  EXPECT_LT(distance(world.position(upper), upperAt), 1e-3f);
+  EXPECT_LT(std::abs(world.angularVelocity(lower)), 1e-2f);
+  EXPECT_LT(std::abs(world.angularVelocity(upper)), 1e-2f);
 }
 
 // A pyramid of twenty levels with reuse on settles as it does with reuse off: the top within

@@ -26,6 +26,11 @@ struct Manifold {
   std::array<ManifoldPoint, 2> points{};
   Vec2f normal; ///< unit, world, from A to B
   int pointCount = 0;
+  /// With no points: a lower bound on the distance between the two shapes' surfaces, m (how far
+  /// apart the separating axis that ended the search found them), or 0 where none was found.
+  /// A pair that moves less than this less speculativeDistance relative to itself cannot
+  /// touch: the world collides it again only then.
+  float separationBound = 0.0f;
 };
 
 /// A shape as the narrowphase sees it: a convex polygon of 1 to 8 vertices with a radius.

@@ -145,12 +145,12 @@ struct WorldDef {
   bool enableWarmStarting = true;
   float maxLinearSpeed = 400.0f;  ///< m/s
   float hitEventThreshold = 1.0f; ///< m/s: impacts at least this fast (and over 1 mm/s) raise a hit event
-  /// Manifold reuse (as Jolt's body-pair cache): a touching pair of sharp-cornered shapes
-  /// (polygons and segments without rounding) whose surfaces have moved less than this relative
-  /// to each other since its manifold was computed, and turned less than contactReuseAngle,
-  /// keeps that manifold's features and clipping, its points carried along with the bodies
-  /// (separations exact), instead of colliding again: most of a resting pile's narrowphase.
-  /// m; 0 collides every touching pair every step (as Box2D).
+  /// Manifold reuse (as Jolt's body-pair cache): a touching pair whose shapes' cores (a
+  /// round shape's surface moved in by its radius: a ball's centre) have moved less than this
+  /// relative to each other since its manifold was computed, and turned less than
+  /// contactReuseAngle, keeps that manifold's features and clipping, its points carried along
+  /// with the bodies (separations exact), instead of colliding again: most of a resting pile's
+  /// narrowphase. m; 0 collides every touching pair every step (as Box2D).
   float contactReuseDistance = 0.001f;
   float contactReuseAngle = 0.0087f;    ///< rad (half a degree)
   bool enableSleep = true;              ///< islands at rest fall asleep and cost (almost) nothing
