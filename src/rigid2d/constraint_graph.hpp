@@ -91,9 +91,10 @@ inline int findColour(ContactSolverData& d, std::uint32_t a, std::uint32_t b, st
 inline constexpr std::uint32_t minJointsPerTask = 64;
 
 /// Collects and colours this step's joints before the contacts and makes (or keeps) their solver
-/// copies.
-void colourJoints(WorldState& w, ContactSolverData& d);
-/// Each joint copy's frame for this step and its type's prepare, on threads.
-void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& context);
+/// copies; true if it kept last step's (their frames' solver indices are still this step's).
+bool colourJoints(WorldState& w, ContactSolverData& d);
+/// Each joint copy's frame for this step and its type's prepare, on threads; `kept`: the copies
+/// are last step's (colourJoints).
+void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& context, bool kept);
 
 } // namespace impetus::rigid2d::detail

@@ -334,8 +334,8 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
 
   // The joints are coloured here (joint_graph.cpp); the contacts have their colours already
   // (WorldState::contactGraph). The overflow's contacts are solved from copies.
-  colourJoints(w, d);
-  prepareJointSims(w, d, context);
+  const bool keptJoints = colourJoints(w, d);
+  prepareJointSims(w, d, context, keptJoints);
   const solver::ColourGraph& graph = w.contactGraph;
   d.overflow.clear();
   for (const std::uint32_t slot : graph.members(solver::ColourGraph::overflow)) {

@@ -31,21 +31,24 @@ std::pair<std::uint32_t, std::uint32_t> jointSolverIndices(const WorldState& w, 
   return {aMoves ? a.solverIndex : w.staticIndex(), b.moving() ? b.solverIndex : w.staticIndex()};
 }
 
-void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, JointFrame& f, const StepContext& context) {
-  const Body& a = w.bodies[joint.bodyA];
-  const Body& b = w.bodies[joint.bodyB];
+void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, JointFrame& f, const StepContext& context,
+                  bool indicesKnown) {
   const std::uint32_t staticIndex = w.staticIndex();
-  std::tie(f.indexA, f.indexB) = jointSolverIndices(w, joint);
+  if (!indicesKnown) {
+    std::tie(f.indexA, f.indexB) = jointSolverIndices(w, joint);
+  }
   const bool aMoves = f.indexA != staticIndex;
   const bool bMoves = f.indexB != staticIndex;
+  const JointBodyPose a = aMoves ? w.jointPoses[f.indexA] : jointBodyPose(w.bodies[joint.bodyA]);
+  const JointBodyPose b = bMoves ? w.jointPoses[f.indexB] : jointBodyPose(w.bodies[joint.bodyB]);
   f.mA = aMoves ? a.inverseMass : 0.0f;
   f.mB = bMoves ? b.inverseMass : 0.0f;
   f.iA = aMoves ? a.inverseInertia : 0.0f;
   f.iB = bMoves ? b.inverseInertia : 0.0f;
-  f.frameA = rotate(a.transform.q, joint.localAnchorA - a.localCenter);
-  f.frameB = rotate(b.transform.q, joint.localAnchorB - b.localCenter);
+  f.frameA = rotate(a.q, joint.localAnchorA - a.localCenter);
+  f.frameB = rotate(b.q, joint.localAnchorB - b.localCenter);
   f.deltaCenter = b.center - a.center;
-  f.deltaAngle = relativeAngle(b.transform.q, a.transform.q);
+  f.deltaAngle = relativeAngle(b.q, a.q);
   f.softness = context.jointSoftness;
   f.maxSpeed = context.maxLinearSpeed;
   f.maxSpin = context.maxAngularSpeed;
@@ -64,7 +67,7 @@ void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, Join
         },
         data);
   }
-  const JointPose pose{a.transform.q, b.transform.q, a.localCenter, b.localCenter, b.center};
+  const JointPose pose{a.q, b.q, a.localCenter, b.localCenter, b.center};
   std::visit([&](auto& typed) { prepareJoint(typed, f, pose, context); }, data);
 }
 

@@ -13,8 +13,8 @@ namespace impetus::rigid2d::detail {
 /// the contacts (joints hold structures together: a colour of their own is worth more to them),
 /// and makes their solver copies in colour order. A joint with no rows (a filter joint) takes
 /// none. Done again only when the joints or the moving bodies changed (the same colouring would
-/// come out); otherwise the copies, impulses and settings in them, stay where they are.
-void colourJoints(WorldState& w, ContactSolverData& d) {
+/// come out); otherwise the copies, impulses and settings in them, stay where they are (true).
+bool colourJoints(WorldState& w, ContactSolverData& d) {
   const std::uint32_t staticIndex = w.staticIndex();
   // The joints to solve are last step's while the awake joint set and the moving bodies are (a
   // joint's bodies never change, and destroying one makes the colours invalid): then the
@@ -28,7 +28,7 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
     d.colouredAwakeJoints.assign(awakeJoints.begin(), awakeJoints.end());
   }
   if (sameBodies && d.colouredJoints == w.solvedJoints) {
-    return;
+    return true;
   }
   returnJointSims(w);
   d.bodyColours.assign(staticIndex, 0);
@@ -85,6 +85,7 @@ void colourJoints(WorldState& w, ContactSolverData& d) {
   d.colouredJoints.assign(w.solvedJoints.begin(), w.solvedJoints.end());
   d.colouredBodies.assign(w.awakeBodies.begin(), w.awakeBodies.end());
   d.jointColoursValid = true;
+  return false;
 }
 
 namespace {
@@ -109,9 +110,19 @@ constexpr std::uint32_t jointPrefetchDistance = 8;
   __builtin_prefetch(&w.bodies[joint.bodyB]);
 }
 
+/// The same for a kept copy, whose solver indices are known: its moving bodies' poses.
+[[gnu::always_inline]] inline void prefetchJointPoses(const WorldState& w, const JointFrame& f) {
+  if (f.indexA < w.jointPoses.size()) {
+    __builtin_prefetch(&w.jointPoses[f.indexA]);
+  }
+  if (f.indexB < w.jointPoses.size()) {
+    __builtin_prefetch(&w.jointPoses[f.indexB]);
+  }
+}
+
 } // namespace
 
-void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& context) {
+void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& context, bool kept) {
   w.parallelFor(
       static_cast<std::uint32_t>(d.jointSims.size()), minJointsPerTask, [&](std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t k = begin; k < end; ++k) {
@@ -119,10 +130,15 @@ void prepareJointSims(WorldState& w, ContactSolverData& d, const StepContext& co
             prefetchJoint(w.joints[d.jointSims[k + jointPrefetchDistance].slot]);
           }
           if (k + jointPrefetchDistance / 2 < end && d.jointSims[k + jointPrefetchDistance / 2].slot != noJointSim) {
-            prefetchJointBodies(w, w.joints[d.jointSims[k + jointPrefetchDistance / 2].slot]);
+            const JointSim& ahead = d.jointSims[k + jointPrefetchDistance / 2];
+            if (kept) {
+              prefetchJointPoses(w, ahead.frame);
+            } else {
+              prefetchJointBodies(w, w.joints[ahead.slot]);
+            }
           }
           JointSim& sim = d.jointSims[k];
-          prepareJoint(w, w.joints[sim.slot], sim.data, sim.frame, context);
+          prepareJoint(w, w.joints[sim.slot], sim.data, sim.frame, context, kept);
         }
       });
 }

@@ -61,8 +61,12 @@ void collectSolvedJoints(WorldState& w);
 /// The joint's bodies' solver indices this step (the static index for one not moving).
 [[nodiscard]] std::pair<std::uint32_t, std::uint32_t> jointSolverIndices(const WorldState& w, const Joint& joint);
 /// One joint's frame for this step and its type's prepare, into `data` and `f` (the Joint's own
-/// or its solver copy's). Reads only the joint and its bodies: joints prepare on threads.
-void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, JointFrame& f, const StepContext& context);
+/// or its solver copy's). With `indicesKnown`, f's solver indices are this step's already (a
+/// copy kept from last step, whose bodies kept their indices): the moving bodies are read from
+/// WorldState::jointPoses, not their records. Reads only the joint and its bodies: joints
+/// prepare on threads.
+void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, JointFrame& f, const StepContext& context,
+                  bool indicesKnown = false);
 /// collectSolvedJoints, then each joint prepared in its slot (the book's solver).
 void prepareJoints(WorldState& w, const StepContext& context);
 /// One joint's warm start: its parts' accumulated impulses applied again.

@@ -48,6 +48,7 @@ void buildSolverBodies(WorldState& w) {
   const auto n = static_cast<std::uint32_t>(w.awakeBodies.size());
   w.states.resize(n + 2);
   w.sims.resize(n);
+  w.jointPoses.resize(n);
   w.states[n] = BodyState{}; // the static state: at rest, never written
   // states[n + 1]: where the wide contact solve writes its static lanes (never read), so that
   // its stores need no branch.
@@ -59,6 +60,7 @@ void buildSolverBodies(WorldState& w) {
       b.solverIndex = i;
       w.bodyInfo[w.awakeBodies[i]] = {i, b.inverseMass, b.inverseInertia, b.center - b.transform.p};
       w.states[i] = BodyState{b.linearVelocity, b.angularVelocity, 0.0f, {}, Rot2f::identity()};
+      w.jointPoses[i] = jointBodyPose(b);
       BodySim& sim = w.sims[i];
       sim.dynamic = b.type == BodyType::dynamicBody;
       sim.acceleration = sim.dynamic ? gravity * b.gravityScale + b.force * b.inverseMass : Vec2f{};

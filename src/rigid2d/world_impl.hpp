@@ -238,6 +238,20 @@ struct SolverBodyInfo {
   Vec2f centerOffset;          ///< centre of mass minus origin, world axes, m
 };
 
+/// What a joint's prepare reads of a body, packed (by solver index for the moving bodies, built
+/// with `states`): its pose and inverse masses, without the Body's cold lines.
+struct JointBodyPose {
+  Rot2f q = Rot2f::identity();
+  Vec2f center;      ///< centre of mass, world, m
+  Vec2f localCenter; ///< centre of mass in the body frame, m
+  float inverseMass = 0.0f;
+  float inverseInertia = 0.0f;
+};
+
+[[nodiscard]] inline JointBodyPose jointBodyPose(const Body& b) {
+  return {b.transform.q, b.center, b.localCenter, b.inverseMass, b.inverseInertia};
+}
+
 struct ContactSolverData; // contact_solver.cpp
 struct Joint;             // joints.hpp
 
@@ -316,7 +330,8 @@ struct WorldState {
   std::vector<std::uint32_t> awakeBodies;
   std::vector<BodyState> states;
   std::vector<BodySim> sims;
-  std::vector<SolverBodyInfo> bodyInfo; ///< by body slot, rebuilt each step with `states`
+  std::vector<JointBodyPose> jointPoses; ///< by solver index, this step's (buildSolverBodies)
+  std::vector<SolverBodyInfo> bodyInfo;  ///< by body slot, rebuilt each step with `states`
   std::unique_ptr<ContactSolverData> contactSolver;
   std::vector<BulletStart> bullets;      ///< scratch of the finalize pass
   std::vector<std::uint8_t> finishMarks; ///< the finalize's, by solver index: what the serial pass does
