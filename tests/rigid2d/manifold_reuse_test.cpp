@@ -59,6 +59,26 @@ TEST(ManifoldReuse, a_carried_manifold_matches_a_fresh_one_within_the_tolerance)
       detail::carryManifold(far, xfA, mul(xfA, at(1.0f, 0.99f, pi<float> / 180.0f)), 0.001f, std::sin(0.0087f)));
 }
 
+/// A manifold noted at (xfA, start) and carried to (xfA, moved), beside a fresh one at moved:
+/// `collideAt(xfB)` collides the pair with B at xfB; `radiusB` is B's rounding.
+struct CarriedAndFresh {
+  detail::Contact carried;
+  Manifold fresh;
+  bool wasCarried = false;
+};
+
+template <class CollideAt> CarriedAndFresh carryAndCollide(const CollideAt& collideAt, float radiusB,
+                                                           const Transform2f& xfA, const Transform2f& start,
+                                                           const Transform2f& moved) {
+  CarriedAndFresh r;
+  r.carried.frame.radiusB = radiusB;
+  r.carried.manifold = collideAt(start);
+  detail::recordManifoldFrame(r.carried, xfA, start);
+  r.wasCarried = detail::carryManifold(r.carried, xfA, moved, 0.001f, std::sin(0.0087f));
+  r.fresh = collideAt(moved);
+  return r;
+}
+
 // A ball resting on a slab: carried while its centre moves less than the tolerance across,
 // however it turns, its contact stays straight under the centre (no lever arm for the slab's
 // push), and matches a fresh manifold's separation and point.
@@ -66,25 +86,22 @@ TEST(ManifoldReuse, a_carried_ball_contact_stays_under_the_ball_however_it_turns
   const Polygon ground = makeBox(5.0f, 0.5f);
   const Circle ball{{}, 0.25f};
   const Transform2f xfA = at(0.3f, -0.2f, 0.05f);
-  const Transform2f start = mul(xfA, at(1.0f, 0.749f));
-  detail::Contact c;
-  c.frame.radiusB = ball.radius;
-  c.manifold = collidePolygonAndCircle(ground, xfA, ball, start);
-  ASSERT_EQ(c.manifold.pointCount, 1);
-  detail::recordManifoldFrame(c, xfA, start);
+  const auto collideAt = [&](const Transform2f& xfB) { return collidePolygonAndCircle(ground, xfA, ball, xfB); };
   // 0.4 mm across, 0.2 mm down, a quarter degree turned (within half a degree).
-  const Transform2f moved = mul(xfA, at(1.0004f, 0.7488f, 0.25f * pi<float> / 180.0f));
-  ASSERT_TRUE(detail::carryManifold(c, xfA, moved, 0.001f, std::sin(0.0087f)));
-  const Manifold fresh = collidePolygonAndCircle(ground, xfA, ball, moved);
-  ASSERT_EQ(fresh.pointCount, 1);
-  const ManifoldPoint& p = c.manifold.points[0];
-  const ManifoldPoint& q = fresh.points[0];
+  const CarriedAndFresh r = carryAndCollide(collideAt, ball.radius, xfA, mul(xfA, at(1.0f, 0.749f)),
+                                            mul(xfA, at(1.0004f, 0.7488f, 0.25f * pi<float> / 180.0f)));
+  ASSERT_TRUE(r.wasCarried);
+  ASSERT_EQ(r.carried.manifold.pointCount, 1);
+  ASSERT_EQ(r.fresh.pointCount, 1);
+  const ManifoldPoint& p = r.carried.manifold.points[0];
+  const ManifoldPoint& q = r.fresh.points[0];
   EXPECT_NEAR(p.separation, q.separation, 2e-6f);
   EXPECT_LT(distance(p.point, q.point), 2e-6f);
   // The point relative to the ball's centre lies along the normal: the push has no lever arm.
-  EXPECT_LT(std::abs(cross(p.anchorB, c.manifold.normal)), 1e-6f);
+  EXPECT_LT(std::abs(cross(p.anchorB, r.carried.manifold.normal)), 1e-6f);
   // The centre 2 mm across: computed again.
-  EXPECT_FALSE(detail::carryManifold(c, xfA, mul(xfA, at(1.002f, 0.749f)), 0.001f, std::sin(0.0087f)));
+  detail::Contact again = r.carried;
+  EXPECT_FALSE(detail::carryManifold(again, xfA, mul(xfA, at(1.002f, 0.749f)), 0.001f, std::sin(0.0087f)));
 }
 
 // A rounded box (corners of radius 5 cm) resting on a slab: carried by its cores' corners, its
@@ -94,19 +111,15 @@ TEST(ManifoldReuse, a_carried_rounded_box_matches_a_fresh_manifold) {
   const std::array<Vec2f, 4> corners{{{-0.45f, -0.45f}, {0.45f, -0.45f}, {0.45f, 0.45f}, {-0.45f, 0.45f}}};
   const Polygon rounded = makePolygon(corners, 0.05f);
   const Transform2f xfA = at(0.3f, -0.2f, 0.05f);
-  const Transform2f start = mul(xfA, at(1.0f, 0.999f));
-  detail::Contact c;
-  c.frame.radiusB = rounded.radius;
-  c.manifold = collidePolygons(ground, xfA, rounded, start);
-  ASSERT_EQ(c.manifold.pointCount, 2);
-  detail::recordManifoldFrame(c, xfA, start);
-  const Transform2f moved = mul(xfA, at(1.0003f, 0.9986f, 0.03f * pi<float> / 180.0f));
-  ASSERT_TRUE(detail::carryManifold(c, xfA, moved, 0.001f, std::sin(0.0087f)));
-  const Manifold fresh = collidePolygons(ground, xfA, rounded, moved);
-  ASSERT_EQ(fresh.pointCount, 2);
+  const auto collideAt = [&](const Transform2f& xfB) { return collidePolygons(ground, xfA, rounded, xfB); };
+  const CarriedAndFresh r = carryAndCollide(collideAt, rounded.radius, xfA, mul(xfA, at(1.0f, 0.999f)),
+                                            mul(xfA, at(1.0003f, 0.9986f, 0.03f * pi<float> / 180.0f)));
+  ASSERT_TRUE(r.wasCarried);
+  ASSERT_EQ(r.carried.manifold.pointCount, 2);
+  ASSERT_EQ(r.fresh.pointCount, 2);
   for (std::size_t k = 0; k < 2; ++k) {
-    const ManifoldPoint& p = c.manifold.points[k];
-    const ManifoldPoint& q = fresh.points[k];
+    const ManifoldPoint& p = r.carried.manifold.points[k];
+    const ManifoldPoint& q = r.fresh.points[k];
     EXPECT_EQ(p.id, q.id);
     EXPECT_NEAR(p.separation, q.separation, 2e-6f) << k;
     // Under the corners' centres, which moved with the box: within float rounding of fresh.
