@@ -65,7 +65,7 @@ ContactConstraint makeContactConstraint(const WorldState& w, Contact& contact, s
   c.rollingResistance = contact.rollingResistance;
   const float kRolling = c.iA + c.iB;
   c.rollingMass = (c.rollingResistance > 0.0f && kRolling > 0.0f) ? 1.0f / kRolling : 0.0f;
-  c.rollingImpulse = w.def.enableWarmStarting ? contact.rollingImpulse : 0.0f;
+  c.rollingImpulse = rollingImpulseToWarmStart(contact, w.def.enableWarmStarting);
   c.tangentSpeed = contact.tangentSpeed;
   c.softness = (c.mA == 0.0f || c.mB == 0.0f) ? staticSoft : soft;
   c.pointCount = m.pointCount;
@@ -366,7 +366,7 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
     for (std::uint32_t batch = begin; batch < end; ++batch) {
       const std::uint32_t* slots = &d.slots[std::size_t{batch} * width];
       if (batch + prefetchDistance < batches) {
-        prefetchContacts(w, slots + std::size_t{prefetchDistance} * width, width, 0, contactSolverBytes);
+        prefetchContacts(w, slots + std::size_t{prefetchDistance} * width, width, 0, contactPrepareBytes);
       }
       const auto count = static_cast<int>(std::find(slots, slots + width, noContact) - slots);
       kernels.prepare(d.batches(), batch, w, slots, count, d.soft, d.staticSoft);

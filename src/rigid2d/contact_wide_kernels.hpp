@@ -100,7 +100,7 @@ struct BodiesW {
   lane(wc.friction, i) = contact.friction;
   lane(wc.restitution, i) = contact.restitution;
   lane(wc.rollingResistance, i) = contact.rollingResistance;
-  lane(wc.rollingImpulse, i) = warm ? contact.rollingImpulse : 0.0f;
+  lane(wc.rollingImpulse, i) = rollingImpulseToWarmStart(contact, warm);
   lane(wc.tangentSpeed, i) = contact.tangentSpeed;
   const Softness& s = (a.inverseMass == 0.0f || b.inverseMass == 0.0f) ? staticSoft : soft;
   lane(wc.biasRate, i) = s.biasRate;

@@ -190,8 +190,16 @@ inline constexpr float restingApproachSpeed = 1e-3f;
   return approachSpeed > restingApproachSpeed && approachSpeed >= hitEventThreshold;
 }
 
-/// The bytes of a Contact the solver's passes read and write (the frame after them is not).
-inline constexpr std::size_t contactSolverBytes = offsetof(Contact, frame);
+/// The rolling impulse a contact's solve starts from: zero without warm starting, and without
+/// rolling resistance (its row holds none), where the record's third line is not read.
+[[nodiscard]] inline float rollingImpulseToWarmStart(const Contact& contact, bool warmStarting) {
+  return warmStarting && contact.rollingResistance > 0.0f ? contact.rollingImpulse : 0.0f;
+}
+
+/// The bytes the prepare reads of a contact without rolling resistance (whose rolling impulse,
+/// after them, is always zero): its first two cache lines.
+inline constexpr std::size_t contactPrepareBytes = contactStoreLine + 64;
+static_assert(offsetof(Contact, manifold) + offsetof(Manifold, pointCount) + sizeof(int) <= contactPrepareBytes);
 
 /// The solver's per-body state for one step: velocities and the position and rotation deltas
 /// accumulated over the substeps (anchors stay fixed in the bodies, so separations follow from
