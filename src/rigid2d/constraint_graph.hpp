@@ -57,6 +57,7 @@ struct ContactSolverData {
   Softness soft, staticSoft;
   float pushSpeed = 0.0f;
   float restitutionThreshold = 0.0f;
+  ContactSpeedCaps caps; ///< this step's, for the points' impulse bounds
 
   [[nodiscard]] void* batches() { return wide.data(); }
 };

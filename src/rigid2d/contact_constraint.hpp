@@ -25,6 +25,7 @@ struct ConstraintPoint {
   float maxNormalImpulse = 0.0f;
   float normalMass = 0.0f;
   float tangentMass = 0.0f;
+  float normalBound = 0.0f; ///< the most normal impulse the point may hold (contactImpulseBound), N s
   /// The point's fastest approach this step, m/s (positive approaching; hit events): its normal
   /// approach before the step (what a hit reports, unaffected by the order the points are solved
   /// in), or faster where a bounce met one within it (an impact passed along a row of touching
@@ -59,6 +60,25 @@ using solver::solveNormalBlock;
 template <class F>
 [[gnu::always_inline]] static inline F normalCoupling(F mA, F mB, F iA, F iB, F rnAj, F rnAk, F rnBj, F rnBk) {
   return mA + mB + iA * rnAj * rnAk + iB * rnBj * rnBk;
+}
+
+/// The world's speed caps as the contact rows see them (StepContext): 2 maxLinearSpeed, m/s, and
+/// the spin cap, rad/s.
+struct ContactSpeedCaps {
+  float twoMaxSpeed = 0.0f;
+  float maxSpin = 0.0f;
+};
+
+/// The most normal impulse a contact point may hold in a substep, N s: what stops the fastest
+/// approach the speed caps allow (twice the speed cap along the normal and the spin cap on each
+/// lever arm) at the point's normal mass, as a joint row's (solver::maxRowImpulse). A resting
+/// load needs far less (at 10:1 masses a stack's weight over a substep is thousands of times
+/// under it); only the impulses of a jam running away (a light body crushed between a wall and
+/// a heavy one) reach it, and it keeps them finite. `leverArms`: |rnA| + |rnB|, m (each as
+/// max(x, -x), the wide kernels' way).
+template <class F>
+[[gnu::always_inline]] static inline F contactImpulseBound(F normalMass, F leverArms, F twoMaxSpeed, F maxSpin) {
+  return normalMass * (twoMaxSpeed + maxSpin * leverArms);
 }
 
 /// A lane without a contact, in the solver's slot lists.
@@ -136,7 +156,7 @@ struct WideKernels {
   /// Prepares batch `batch` from the contacts in slots[0, count), count <= width (the rest of
   /// the lanes: unused): in each lane what the overflow's makeContactConstraint computes.
   void (*prepare)(void* batches, std::uint32_t batch, WorldState& w, const std::uint32_t* slots, int count,
-                  const Softness& soft, const Softness& staticSoft) = nullptr;
+                  const Softness& soft, const Softness& staticSoft, const ContactSpeedCaps& caps) = nullptr;
   void (*warmStart)(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states,
                     std::uint32_t staticIndex) = nullptr;
   void (*solve)(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states, std::uint32_t staticIndex,

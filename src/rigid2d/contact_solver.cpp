@@ -47,7 +47,7 @@ namespace {
 /// mass, effective masses, and the approach speed before the step. The wide prepare computes the
 /// same in lanes (gatherLane and deriveLanes, contact_wide_kernels.hpp).
 ContactConstraint makeContactConstraint(const WorldState& w, Contact& contact, std::uint32_t slot, const Softness& soft,
-                                        const Softness& staticSoft) {
+                                        const Softness& staticSoft, const ContactSpeedCaps& caps) {
   const SolverBodyInfo& a = w.bodyInfo[contact.bodyA];
   const SolverBodyInfo& b = w.bodyInfo[contact.bodyB];
   const Manifold& m = contact.manifold;
@@ -94,6 +94,8 @@ ContactConstraint makeContactConstraint(const WorldState& w, Contact& contact, s
     const float rnB = cross(p.rB, m.normal);
     const float kNormal = c.mA + c.mB + c.iA * rnA * rnA + c.iB * rnB * rnB;
     p.normalMass = kNormal > 0.0f ? 1.0f / kNormal : 0.0f;
+    p.normalBound =
+        contactImpulseBound(p.normalMass, std::max(rnA, -rnA) + std::max(rnB, -rnB), caps.twoMaxSpeed, caps.maxSpin);
     const float rtA = cross(p.rA, tangent);
     const float rtB = cross(p.rB, tangent);
     const float kTangent = c.mA + c.mB + c.iA * rtA * rtA + c.iB * rtB * rtB;
@@ -232,7 +234,7 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
     }
     const float vn = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
     const float impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
-    const float total = std::max(p.normalImpulse + impulse, 0.0f);
+    const float total = std::min(std::max(p.normalImpulse + impulse, 0.0f), p.normalBound);
     const float applied = total - p.normalImpulse;
     p.normalImpulse = total;
     p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
@@ -330,6 +332,7 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
   d.soft = makeSoft(hertz, w.def.contactDampingRatio, context.h);
   d.staticSoft = makeSoft(2.0f * hertz, w.def.contactDampingRatio, context.h);
   d.pushSpeed = w.def.maxContactPushSpeed;
+  d.caps = {2.0f * context.maxLinearSpeed, context.maxAngularSpeed};
   d.restitutionThreshold = w.def.restitutionThreshold;
 
   // The joints are coloured here (joint_graph.cpp); the contacts have their colours already
@@ -339,7 +342,7 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
   const solver::ColourGraph& graph = w.contactGraph;
   d.overflow.clear();
   for (const std::uint32_t slot : graph.members(solver::ColourGraph::overflow)) {
-    d.overflow.push_back(makeContactConstraint(w, w.contacts[slot], slot, d.soft, d.staticSoft));
+    d.overflow.push_back(makeContactConstraint(w, w.contacts[slot], slot, d.soft, d.staticSoft, d.caps));
   }
   // Batches of `width` per colour.
   const auto width = static_cast<std::uint32_t>(kernels.width);
@@ -369,7 +372,7 @@ void prepareConstraints(WorldState& w, const StepContext& context) {
         prefetchContacts(w, slots + std::size_t{prefetchDistance} * width, width, 0, contactPrepareBytes);
       }
       const auto count = static_cast<int>(std::find(slots, slots + width, noContact) - slots);
-      kernels.prepare(d.batches(), batch, w, slots, count, d.soft, d.staticSoft);
+      kernels.prepare(d.batches(), batch, w, slots, count, d.soft, d.staticSoft, d.caps);
     }
   });
 }

@@ -28,6 +28,7 @@ struct ContactConstraintWide {
     FloatW adjustedSeparation;
     FloatW normalImpulse, tangentImpulse, maxNormalImpulse;
     FloatW normalMass, tangentMass;
+    FloatW normalBound; ///< contactImpulseBound
     FloatW impactSpeed;
   };
   std::array<Point, 2> points;
@@ -153,7 +154,8 @@ void addAngular(FloatW& vx, FloatW& vy, FloatW w, FloatW rx, FloatW ry) {
 /// the same operations in the same order (a lane's results are the scalar constraint's, bit for
 /// bit): effective masses, separations relative to the anchors, and each point's approach speed
 /// before the step (positive approaching). Lanes without a point k (pointCount <= k) get zeros.
-[[gnu::always_inline]] inline void deriveLanes(ContactConstraintWide& wc, FloatW pointCount, const BodyState* states) {
+[[gnu::always_inline]] inline void deriveLanes(ContactConstraintWide& wc, FloatW pointCount, const BodyState* states,
+                                               const ContactSpeedCaps& caps) {
   const FloatW zero = zeroW();
   const FloatW one = splatW(1.0f);
   // 1/k where the mask holds, else 0 (and no division by zero in the other lanes).
@@ -173,6 +175,8 @@ void addAngular(FloatW& vx, FloatW& vy, FloatW w, FloatW rx, FloatW ry) {
     const FloatW rnB = p.rBx * ny - p.rBy * nx;
     const FloatW kNormal = wc.invMassA + wc.invMassB + wc.invIA * rnA * rnA + wc.invIB * rnB * rnB;
     p.normalMass = inverseWhere(andW(has, greaterW(kNormal, zero)), kNormal);
+    p.normalBound = contactImpulseBound(p.normalMass, maxW(rnA, -rnA) + maxW(rnB, -rnB), splatW(caps.twoMaxSpeed),
+                                        splatW(caps.maxSpin));
     const FloatW rtA = p.rAx * ty - p.rAy * tx;
     const FloatW rtB = p.rBx * ty - p.rBy * tx;
     const FloatW kTangent = wc.invMassA + wc.invMassB + wc.invIA * rtA * rtA + wc.invIB * rtB * rtB;
@@ -317,7 +321,7 @@ void bounceWide(ContactConstraintWide& c, BodiesW& a, BodiesW& b, const std::arr
       bias = selectW(speculative, bias, zero);
     }
     const FloatW impulse = -(p.normalMass * massScale * (vn + bias)) - impulseScale * p.normalImpulse;
-    const FloatW total = maxW(p.normalImpulse + impulse, zero);
+    const FloatW total = minW(maxW(p.normalImpulse + impulse, zero), p.normalBound);
     const FloatW applied = total - p.normalImpulse;
     p.normalImpulse = total;
     p.maxNormalImpulse = maxW(p.maxNormalImpulse, applied);
@@ -373,7 +377,7 @@ void bounceWide(ContactConstraintWide& c, BodiesW& a, BodiesW& b, const std::arr
 ContactConstraintWide* batchesOf(void* batches) { return static_cast<ContactConstraintWide*>(batches); }
 
 void prepareBatch(void* batches, std::uint32_t batch, WorldState& w, const std::uint32_t* slots, int count,
-                  const Softness& soft, const Softness& staticSoft) {
+                  const Softness& soft, const Softness& staticSoft, const ContactSpeedCaps& caps) {
   ContactConstraintWide& wc = batchesOf(batches)[batch];
   FloatW pointCount = zeroW();
   for (int i = 0; i < simdWidth; ++i) {
@@ -383,7 +387,7 @@ void prepareBatch(void* batches, std::uint32_t batch, WorldState& w, const std::
       clearLane(wc, i, w.staticIndex());
     }
   }
-  deriveLanes(wc, pointCount, w.states.data());
+  deriveLanes(wc, pointCount, w.states.data(), caps);
 }
 
 void warmStartBatches(void* batches, std::uint32_t begin, std::uint32_t end, BodyState* states,
