@@ -30,7 +30,6 @@ float axialImpulse(const RevoluteJoint& joint) {
 void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const JointPose& /*pose*/,
                   const StepContext& context) {
   joint.angleAtStart = unwindAngle(frame.deltaAngle - joint.def.referenceAngle);
-  joint.axialMass = solver::rowMassOf(angleRow(), frame);
   joint.point.prepare(frame.frameA, frame.frameB, frame);
   joint.spring.prepare(joint.def.enableSpring ? joint.def.hertz : 0.0f, joint.def.dampingRatio, context.h);
   clearSwitchedOffImpulses(joint);
@@ -56,7 +55,7 @@ template <bool UseBias> void solvePass(RevoluteJoint& joint, const JointFrame& f
                                        std::uint32_t staticIndex, const StepContext& context) {
   withBodies(frame, states, staticIndex, [&](BodyState& a, BodyState& b) {
     const RevoluteJointSettings& def = joint.def;
-    const solver::SteadyAngularRow<float> angle{angleRow(), joint.axialMass};
+    const AngleRow angle = angleRow();
     // The positions do not change within a pass: one joint angle for the spring and the limits.
     const float position = def.enableSpring || def.enableLimit ? jointAngle(joint, a, b) : 0.0f;
     if (def.enableSpring) {

@@ -15,7 +15,6 @@ struct RevoluteJoint {
   MotorPart friction;
   LimitPart limit;
   float angleAtStart = 0.0f; ///< the joint angle (angleB - angleA - referenceAngle) at the step's start, rad
-  solver::RowMass axialMass;  ///< the angle row's, this step
 };
 
 void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const JointPose& pose, const StepContext& context);

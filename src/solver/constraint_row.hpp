@@ -111,46 +111,6 @@ inline void applyRow(const AngularRow<Angular>& row, const Mass& m, Body& a, Bod
   b.w += inverseInertiaTimes(m.iB, row.angularB * impulse);
 }
 
-/// A row's effective mass and impulse bound (rowMass, maxRowImpulse), kg or kg m^2 and N s or
-/// N m s.
-struct RowMass {
-  float mass = 0.0f;
-  float bound = 0.0f;
-};
-
-template <class R, class Pair> [[nodiscard]] inline RowMass rowMassOf(const R& row, const Pair& p) {
-  const float mass = rowMass(row, p);
-  return {mass, maxRowImpulse(row, mass, p)};
-}
-
-/// An angle row with its mass and bound computed once a step: they depend on the inverse
-/// inertias and the spin cap alone, which the substeps do not change. The parts take it wherever
-/// they take a row, and then do not divide again each pass.
-template <class Angular> struct SteadyAngularRow {
-  AngularRow<Angular> row;
-  RowMass mass;
-};
-
-template <class Angular, class Mass>
-[[nodiscard]] inline float rowMass(const SteadyAngularRow<Angular>& row, const Mass& /*m*/) {
-  return row.mass.mass;
-}
-
-template <class Angular, class Pair>
-[[nodiscard]] inline float maxRowImpulse(const SteadyAngularRow<Angular>& row, float /*mass*/, const Pair& /*p*/) {
-  return row.mass.bound;
-}
-
-template <class Angular, class Body>
-[[nodiscard]] inline float rowSpeed(const SteadyAngularRow<Angular>& row, const Body& a, const Body& b) {
-  return rowSpeed(row.row, a, b);
-}
-
-template <class Angular, class Mass, class Body>
-inline void applyRow(const SteadyAngularRow<Angular>& row, const Mass& m, Body& a, Body& b, float impulse) {
-  applyRow(row.row, m, a, b, impulse);
-}
-
 /// Applies an impulse (N s, or N m s for an angle row) along a row: +impulse on B, -impulse on A.
 template <class Vec, class Angular, class Mass, class Body>
 inline void applyRow(const Row<Vec, Angular>& row, const Mass& m, Body& a, Body& b, float impulse) {
