@@ -37,8 +37,8 @@ struct Joint {
 
   [[nodiscard]] JointType type() const noexcept { return static_cast<JointType>(data.index()); }
 };
-// Four cache lines: a joint type's data that grows the record past them costs every joint's
-// prepare a fifth (a revolute joint 8 bytes larger took joint_grid's step 6% up).
+// Four cache lines: a type's data that grows the record past them makes every joint's prepare
+// read a fifth, and grows the solver copy (JointSim) that every pass streams.
 static_assert(sizeof(Joint) <= 256);
 
 /// A joint as the soft step solves it: a copy of its per-type data and this step's frame, laid out
