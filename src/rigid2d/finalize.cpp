@@ -32,6 +32,20 @@ bool growFatBoxes(WorldState& w, const Body& b) {
   return grew;
 }
 
+/// growFatBoxes for a moving body with one shape in the moving tree (most bodies): notes the
+/// proxy in `grown` instead of marking the shape, so that the serial pass touches neither.
+bool growOnlyFatBox(WorldState& w, const Body& b, GrownProxy& grown) {
+  const std::uint32_t slot = b.shapes.front();
+  const Shape& s = w.shapes[slot];
+  const AABB box = reachBox(s, b.transform);
+  if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
+    fatBox = enlarge(box, s.margin);
+    grown = {slot, s.proxy};
+    return true;
+  }
+  return false;
+}
+
 /// The body's grown fat boxes into their trees and the move buffer: serial, in body order (the
 /// trees and the buffer are shared, and the pair update depends on the buffer's order).
 void moveGrownProxies(WorldState& w, const Body& b) {
@@ -102,8 +116,13 @@ constexpr std::uint32_t finishPrefetchDistance = 12;
   }
 }
 
-/// What the finalize's serial pass does with a body the parallel pass finished.
-enum FinishMark : std::uint8_t { finishedInPlace = 0, fatBoxesGrew = 1, bulletToSweep = 2 };
+/// What the finalize's serial pass does with a body the parallel pass finished: nothing, its
+/// one shape's proxy grown (GrownProxy), its shapes marked fatBoxGrown, or its bullet sweep.
+enum FinishMark : std::uint8_t { finishedInPlace = 0, proxyGrew = 1, fatBoxesGrew = 2, bulletToSweep = 3 };
+
+/// How many bodies ahead the serial pass asks the cache for a grown proxy's leaf (and half as
+/// far, its parent): enlargeProxy's first reads, nodes anywhere in the tree.
+constexpr std::uint32_t enlargePrefetchDistance = 16;
 
 } // namespace
 
@@ -116,6 +135,7 @@ void synchronizeShapes(WorldState& w, const Body& b) {
 void finalizeBodies(WorldState& w, float dt) {
   const auto count = static_cast<std::uint32_t>(w.awakeBodies.size());
   w.finishMarks.resize(count);
+  w.grownProxies.resize(count);
   w.parallelFor(count, minFinishBodiesPerTask, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t i = begin; i < end; ++i) {
       if (i + finishPrefetchDistance < end) {
@@ -133,17 +153,41 @@ void finalizeBodies(WorldState& w, float dt) {
         continue;
       }
       finishBody(w, b, w.states[i], dt);
-      w.finishMarks[i] = growFatBoxes(w, b) ? fatBoxesGrew : finishedInPlace;
+      if (b.shapes.size() == 1 && !w.shapes[b.shapes.front()].inStaticTree) {
+        w.finishMarks[i] = growOnlyFatBox(w, b, w.grownProxies[i]) ? proxyGrew : finishedInPlace;
+      } else {
+        w.finishMarks[i] = growFatBoxes(w, b) ? fatBoxesGrew : finishedInPlace;
+      }
     }
   });
   w.bullets.clear();
   for (std::uint32_t i = 0; i < count; ++i) {
-    Body& b = w.bodies[w.awakeBodies[i]];
-    if (w.finishMarks[i] == fatBoxesGrew) {
-      moveGrownProxies(w, b);
-    } else if (w.finishMarks[i] == bulletToSweep) {
+    if (const std::uint32_t ahead = i + enlargePrefetchDistance; ahead < count && w.finishMarks[ahead] == proxyGrew) {
+      w.movingTree.prefetchLeaf(w.grownProxies[ahead].proxy);
+      __builtin_prefetch(&w.fatBoxes[w.grownProxies[ahead].shape]);
+    }
+    if (const std::uint32_t ahead = i + enlargePrefetchDistance / 2;
+        ahead < count && w.finishMarks[ahead] == proxyGrew) {
+      w.movingTree.prefetchParent(w.grownProxies[ahead].proxy);
+    }
+    switch (w.finishMarks[i]) {
+    case proxyGrew: {
+      const GrownProxy& grown = w.grownProxies[i];
+      w.movingTree.enlargeProxy(grown.proxy, w.fatBoxes[grown.shape]);
+      w.moveBuffer.push_back(grown.shape);
+      break;
+    }
+    case fatBoxesGrew:
+      moveGrownProxies(w, w.bodies[w.awakeBodies[i]]);
+      break;
+    case bulletToSweep: {
+      Body& b = w.bodies[w.awakeBodies[i]];
       w.bullets.push_back({w.awakeBodies[i], b.center, b.transform.q});
       finishBody(w, b, w.states[i], dt);
+      break;
+    }
+    default:
+      break;
     }
   }
   for (const BulletStart& bullet : w.bullets) {

@@ -263,6 +263,13 @@ struct JointBodyPose {
 struct ContactSolverData; // contact_solver.cpp
 struct Joint;             // joints.hpp
 
+/// A body's one shape whose fat box the finalize grew, noted by the parallel pass for the
+/// serial one: it reaches the tree without reading the body and its shape again.
+struct GrownProxy {
+  std::uint32_t shape = 0; ///< shape slot
+  std::int32_t proxy = 0;  ///< in the moving tree
+};
+
 /// Where a bullet started the step, for its sweep.
 struct BulletStart {
   std::uint32_t body = 0;
@@ -343,6 +350,7 @@ struct WorldState {
   std::unique_ptr<ContactSolverData> contactSolver;
   std::vector<BulletStart> bullets;      ///< scratch of the finalize pass
   std::vector<std::uint8_t> finishMarks; ///< the finalize's, by solver index: what the serial pass does
+  std::vector<GrownProxy> grownProxies;  ///< the finalize's, by solver index: a one-shape body's grown proxy
   std::vector<float> islandRest;         ///< scratch of the sleep pass (least rest time per island)
 
   ContactEvents contactEvents;
