@@ -243,7 +243,9 @@ void updatePairs(WorldState& w) {
             return true;
           }
           const Shape& o = w.shapes[other];
-          if (o.body == s.body) {
+          // The filters are in the shapes' records, read already: a pair they keep apart (a
+          // ragdoll's bones, a cloth's jointed neighbours) spares the reads of both bodies.
+          if (o.body == s.body || !shouldCollide(s.filter, o.filter)) {
             return true;
           }
           const Body& ba = w.bodies[s.body];
@@ -259,7 +261,7 @@ void updatePairs(WorldState& w) {
               w.contactByPair.contains(key)) {
             return true;
           }
-          if (!shouldCollide(s.filter, o.filter) || w.jointBlocksCollision(s.body, o.body)) {
+          if (w.jointBlocksCollision(s.body, o.body)) {
             return true;
           }
           found.push_back(key);
