@@ -31,6 +31,22 @@ std::pair<std::uint32_t, std::uint32_t> jointSolverIndices(const WorldState& w, 
   return {aMoves ? a.solverIndex : w.staticIndex(), b.moving() ? b.solverIndex : w.staticIndex()};
 }
 
+namespace {
+
+/// Whether a joint's rows read its bodies' relative angle at the step's start (the angle rows of
+/// the weld, prismatic and motor joints, and a revolute joint's spring and limits): a pin alone
+/// (joint_grid's 20,000) or its motor and friction act on the relative spin, and the distance,
+/// wheel and mouse joints have no angle row.
+bool readsStartAngle(const JointData& data) {
+  if (const auto* revolute = std::get_if<RevoluteJoint>(&data)) {
+    return revolute->def.enableSpring || revolute->def.enableLimit;
+  }
+  return std::holds_alternative<WeldJoint>(data) || std::holds_alternative<PrismaticJoint>(data) ||
+         std::holds_alternative<MotorJoint>(data);
+}
+
+} // namespace
+
 void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, JointFrame& f, const StepContext& context,
                   bool indicesKnown) {
   const std::uint32_t staticIndex = w.staticIndex();
@@ -48,7 +64,7 @@ void prepareJoint(const WorldState& w, const Joint& joint, JointData& data, Join
   f.frameA = rotate(a.q, joint.localAnchorA - a.localCenter);
   f.frameB = rotate(b.q, joint.localAnchorB - b.localCenter);
   f.deltaCenter = b.center - a.center;
-  f.deltaAngle = relativeAngle(b.q, a.q);
+  f.deltaAngle = readsStartAngle(data) ? relativeAngle(b.q, a.q) : 0.0f;
   f.softness = context.jointSoftness;
   f.maxSpeed = context.maxLinearSpeed;
   f.maxSpin = context.maxAngularSpeed;

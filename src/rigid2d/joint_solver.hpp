@@ -45,7 +45,7 @@ struct JointFrame {
   float iA = 0.0f, iB = 0.0f;           ///< inverse rotational inertias, 1/(kg m^2)
   Vec2f frameA, frameB;                 ///< anchors relative to the centres of mass, world axes, at the step's start, m
   Vec2f deltaCenter;                    ///< cB - cA at the step's start, m
-  float deltaAngle = 0.0f;              ///< angleB - angleA at the step's start (in (-pi, pi]), rad
+  float deltaAngle = 0.0f;              ///< angleB - angleA at the step's start, rad (0 unless readsStartAngle)
   Softness softness;                    ///< the rigid rows' stiffness (the joint's constraintHertz, or the world's)
   float maxSpeed = 0.0f;                ///< the world's speed cap, m/s (bounds the rows' impulses: maxRowImpulse)
   float maxSpin = 0.0f;                 ///< the spin cap, rad/s (a quarter turn a substep)

@@ -29,7 +29,9 @@ float axialImpulse(const RevoluteJoint& joint) {
 
 void prepareJoint(RevoluteJoint& joint, const JointFrame& frame, const JointPose& /*pose*/,
                   const StepContext& context) {
-  joint.angleAtStart = unwindAngle(frame.deltaAngle - joint.def.referenceAngle);
+  // Read by the spring and the limits alone (the frame's deltaAngle is computed for them).
+  joint.angleAtStart =
+      joint.def.enableSpring || joint.def.enableLimit ? unwindAngle(frame.deltaAngle - joint.def.referenceAngle) : 0.0f;
   joint.point.prepare(frame.frameA, frame.frameB, frame);
   joint.spring.prepare(joint.def.enableSpring ? joint.def.hertz : 0.0f, joint.def.dampingRatio, context.h);
   clearSwitchedOffImpulses(joint);
