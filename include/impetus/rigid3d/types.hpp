@@ -1,0 +1,66 @@
+// Definitions for the 3D world: ids, body definitions, mass data, world settings. Frames are
+// right-handed with +y up; SI units throughout (m, kg, s, rad).
+#pragma once
+
+#include <impetus/core/id_pool.hpp>
+#include <impetus/math/mat33.hpp>
+#include <impetus/math/quat.hpp>
+#include <impetus/math/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+
+namespace impetus::rigid3d {
+
+using BodyId = Id<struct BodyTag>;
+
+enum class BodyType {
+  staticBody,    ///< never moves, infinite mass
+  kinematicBody, ///< moves at its set velocity, unaffected by forces
+  dynamicBody,   ///< moved by forces, torques and impulses
+};
+
+/// A body's mass properties: its mass, its centre of mass in the body frame and its inertia
+/// tensor about that centre, in the body frame (symmetric, positive definite, its principal
+/// moments satisfying the triangle inequality I1 + I2 >= I3 as every real body's do).
+struct MassData {
+  float mass = 1.0f;                   ///< kg
+  Vec3f center;                        ///< m, body frame
+  Mat33f inertia = Mat33f::identity(); ///< kg m^2, about the centre, body frame
+};
+
+/// Motion a body may not have, along or about the world's axes (a body kept in a plane, a
+/// character's capsule that never tips). A locked axis takes no velocity from forces, impulses
+/// or gyroscopic torque; what the body's definition or setters give it along that axis is
+/// removed at the next step.
+struct AxisLocks {
+  bool linearX = false, linearY = false, linearZ = false;
+  bool angularX = false, angularY = false, angularZ = false;
+};
+
+struct BodyDef {
+  BodyType type = BodyType::staticBody;
+  Vec3f position;                     ///< body origin, m
+  Quatf rotation = Quatf::identity(); ///< body frame in the world (a unit quaternion)
+  Vec3f linearVelocity;               ///< of the centre of mass, world, m/s
+  Vec3f angularVelocity;              ///< world, rad/s
+  float linearDamping = 0.0f;         ///< 1/s: dv/dt = -c v
+  float angularDamping = 0.0f;        ///< 1/s
+  float gravityScale = 1.0f;
+  AxisLocks locks;
+  /// Lets the body spin faster than a quarter turn a substep (a wheel, a rotor); otherwise its
+  /// spin is capped there, where the rotation deltas stop meaning what they say.
+  bool allowFastRotation = false;
+  /// A dynamic body's mass properties. Absent: 1 kg at the body origin with a unit inertia
+  /// tensor (1 kg m^2 about every axis) until set (World::setMassData).
+  std::optional<MassData> massData;
+  std::uint64_t userData = 0;
+};
+
+struct WorldDef {
+  Vec3f gravity{0.0f, -10.0f, 0.0f}; ///< m/s^2
+  int substeps = 4;                  ///< solver substeps per step
+  float maxLinearSpeed = 400.0f;     ///< m/s
+};
+
+} // namespace impetus::rigid3d

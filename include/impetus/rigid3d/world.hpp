@@ -1,0 +1,103 @@
+// The 3D world (ch. 11-12): rigid bodies with quaternion orientation and full inertia tensors,
+// stepped in substeps as the 2D world is. This first part of it moves bodies under gravity,
+// forces, torques and impulses; shapes, collision, contacts and joints come next
+// (docs/rigid3d.md says what is there).
+//
+// Each step, `substeps` times: integrate velocities (gravity, forces and torques; the gyroscopic
+// torque -w x (I w) implicitly, by one Newton step of Euler's equations in the body frame, so a
+// body spun about its intermediate axis flips over and back with its energy bounded; damping,
+// implicitly), hold the speeds within the world's caps, integrate positions (the orientation as
+// q += h/2 (0, w) q, normalised). Everything runs in a fixed order: the same inputs give
+// bit-identical results.
+#pragma once
+
+#include <impetus/math/transform3.hpp>
+#include <impetus/rigid3d/types.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace impetus::rigid3d {
+
+class World {
+public:
+  explicit World(const WorldDef& def = {});
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Advances by dt seconds (0 < dt <= 1).
+  void step(float dt);
+
+  /// Throws impetus::Error for a non-finite or out-of-range field (naming it), a zero
+  /// rotation quaternion, or invalid mass data.
+  BodyId createBody(const BodyDef& def);
+  void destroyBody(BodyId id);
+  [[nodiscard]] bool isValid(BodyId id) const noexcept;
+  [[nodiscard]] std::uint32_t bodyCount() const noexcept;
+  void bodyIds(std::vector<BodyId>& out) const;
+
+  [[nodiscard]] BodyType bodyType(BodyId id) const;
+  /// The body origin's frame in the world.
+  [[nodiscard]] Transform3f transform(BodyId id) const;
+  [[nodiscard]] Vec3f position(BodyId id) const;
+  [[nodiscard]] Quatf rotation(BodyId id) const;
+  /// The centre of mass, world, m.
+  [[nodiscard]] Vec3f worldCenter(BodyId id) const;
+  [[nodiscard]] Vec3f linearVelocity(BodyId id) const;
+  /// World frame, rad/s.
+  [[nodiscard]] Vec3f angularVelocity(BodyId id) const;
+  /// The velocity of a point fixed to the body, given in the world, m/s.
+  [[nodiscard]] Vec3f velocityAt(BodyId id, const Vec3f& worldPoint) const;
+  [[nodiscard]] MassData massData(BodyId id) const;
+  /// The inertia tensor about the centre of mass in world axes, kg m^2: R I R^T.
+  [[nodiscard]] Mat33f worldInertia(BodyId id) const;
+  /// Translational plus rotational kinetic energy, J (in double: for conservation checks).
+  [[nodiscard]] double kineticEnergy(BodyId id) const;
+  /// Angular momentum about the centre of mass, world, kg m^2/s (in double).
+  [[nodiscard]] Vec3d angularMomentum(BodyId id) const;
+  [[nodiscard]] std::uint64_t userData(BodyId id) const;
+
+  /// Teleports the body (its velocities kept). Throws impetus::Error for a non-finite
+  /// position or a zero or non-finite rotation (normalised otherwise).
+  void setTransform(BodyId id, const Vec3f& position, const Quatf& rotation);
+  void setLinearVelocity(BodyId id, const Vec3f& velocity);
+  void setAngularVelocity(BodyId id, const Vec3f& velocity);
+  /// A dynamic body's mass properties (MassData's rules; throws impetus::Error naming the
+  /// field otherwise). The body frame's origin stays where it is; the centre of mass moves.
+  void setMassData(BodyId id, const MassData& data);
+  void setLinearDamping(BodyId id, float damping);
+  void setAngularDamping(BodyId id, float damping);
+  void setGravityScale(BodyId id, float scale);
+  void setAxisLocks(BodyId id, const AxisLocks& locks);
+
+  /// A force (N) at a point (world, m) until the end of the next step; it also turns the body
+  /// by (point - centre) x force. Dynamic bodies only (others ignore it).
+  void applyForce(BodyId id, const Vec3f& force, const Vec3f& worldPoint);
+  void applyForceToCenter(BodyId id, const Vec3f& force);
+  /// A torque (N m, world) until the end of the next step.
+  void applyTorque(BodyId id, const Vec3f& torque);
+  /// An impulse (N s) at a point (world, m): the velocities change at once.
+  void applyLinearImpulse(BodyId id, const Vec3f& impulse, const Vec3f& worldPoint);
+  /// An angular impulse (N m s, world).
+  void applyAngularImpulse(BodyId id, const Vec3f& impulse);
+
+  [[nodiscard]] Vec3f gravity() const noexcept;
+  void setGravity(const Vec3f& gravity);
+  /// Moves the world's origin to `newOrigin` (world, m): every body's position becomes relative
+  /// to it, so a world far from its origin (a flight 100 km out) keeps the resolution of floats.
+  void shiftOrigin(const Vec3f& newOrigin);
+
+  /// A hash of every body's pose and velocities (bits, not values): equal for bit-identical
+  /// states.
+  [[nodiscard]] std::uint64_t stateHash() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace impetus::rigid3d
