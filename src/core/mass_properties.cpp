@@ -92,10 +92,10 @@ PrincipalInertia principalAxes(const Mat33d& inertia) {
   return {eigen.values, eigen.vectors};
 }
 
-void requirePhysicalInertia(const Mat33d& inertia, std::string_view field) {
+void requirePhysicalInertia(const Mat33d& inertia, std::string_view field, double relativeTolerance) {
   requireFinite(inertia, field);
   const double scale = std::fmax(1e-300, std::abs(trace(inertia)));
-  const double tol = 1e-9 * scale;
+  const double tol = relativeTolerance * scale;
   for (int r = 0; r < 3; ++r) {
     for (int c = r + 1; c < 3; ++c) {
       if (std::abs(inertia(r, c) - inertia(c, r)) > tol) {

@@ -1,12 +1,12 @@
 // The 3D world's bodies: creation, destruction, mass properties, state, forces and impulses.
 #include "rigid3d/world_impl.hpp"
 
+#include <impetus/core/mass_properties.hpp>
 #include <impetus/error.hpp>
 #include <impetus/math/symmetric_eigen.hpp>
 #include <impetus/math/validate.hpp>
 #include <impetus/rigid3d/world.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -17,9 +17,9 @@ namespace detail {
 namespace {
 
 /// How far an inertia tensor may be from symmetric, or its principal moments from the triangle
-/// inequality, relative to its largest moment: a tensor computed in float (a thin plate's, whose
-/// moments meet the inequality with equality) misses them by rounding, a few ulps.
-constexpr float inertiaTolerance = 1.0e-4f;
+/// inequality, relative to its trace: a tensor computed in float (a thin plate's, whose moments
+/// meet the inequality with equality) misses them by its rounding, a few ulps (1e-7 each).
+constexpr double inertiaTolerance = 1.0e-5;
 
 /// A unit quaternion from the user's rotation: finite and not (near) zero, normalised.
 Quatf requireRotation(const Quatf& q, std::string_view field) {
@@ -40,26 +40,16 @@ Quatf requireRotation(const Quatf& q, std::string_view field) {
 void requireValidMassData(const MassData& data) {
   requirePositive(data.mass, "mass");
   requireFinite(data.center, "center");
-  requireFinite(data.inertia, "inertia");
-  const Mat33f& i = data.inertia;
-  const float largest = std::max({std::abs(i(0, 0)), std::abs(i(1, 1)), std::abs(i(2, 2))});
+  Mat33d inertia;
   for (int r = 0; r < 3; ++r) {
-    for (int c = r + 1; c < 3; ++c) {
-      if (std::abs(i(r, c) - i(c, r)) > inertiaTolerance * largest) {
-        throwInvalid("inertia(" + std::to_string(r) + "," + std::to_string(c) + ")", i(r, c),
-                     "must equal inertia(" + std::to_string(c) + "," + std::to_string(r) +
-                         ") (an inertia tensor is symmetric)");
-      }
+    for (int c = 0; c < 3; ++c) {
+      inertia(r, c) = data.inertia(r, c);
     }
   }
-  const Vec3f moments = symmetricEigen(i).values; // ascending
-  if (!(moments.x > 0.0f)) {
-    throwInvalid("inertia principal moment", moments.x, "must be positive (the tensor positive definite)");
-  }
-  if (moments.x + moments.y < moments.z * (1.0f - inertiaTolerance)) {
-    throwInvalid("inertia principal moment", moments.z,
-                 "must not exceed the sum of the other two, " + formatFloat(moments.x + moments.y) +
-                     " (no body's mass distribution gives more)");
+  requirePhysicalInertia(inertia, "inertia", inertiaTolerance);
+  // A dynamic body turns under any torque: no principal moment may be zero.
+  if (const double least = symmetricEigen(inertia).values.x; !(least > 0.0)) {
+    throwInvalid("inertia principal moment", least, "must be positive (a dynamic body's tensor is positive definite)");
   }
 }
 

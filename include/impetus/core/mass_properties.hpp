@@ -74,7 +74,8 @@ struct PrincipalInertia {
 
 /// Throws impetus::Error (naming `field`) unless `inertia` could belong to a real body:
 /// finite, symmetric, principal moments non-negative and obeying the triangle inequality
-/// I1 + I2 >= I3 (true of every mass distribution).
-void requirePhysicalInertia(const Mat33d& inertia, std::string_view field);
+/// I1 + I2 >= I3 (true of every mass distribution), each to `relativeTolerance` of the trace
+/// (the default suits tensors computed in double; one computed in float misses by its rounding).
+void requirePhysicalInertia(const Mat33d& inertia, std::string_view field, double relativeTolerance = 1e-9);
 
 } // namespace impetus
