@@ -111,6 +111,10 @@ BodyId World::createBody(const BodyDef& def) {
 
 void World::destroyBody(BodyId id) {
   detail::Body& b = impl_->body(id);
+  for (const std::uint32_t slot : b.shapes) {
+    impl_->shapeIds.freeId(impl_->shapes[slot].id);
+    impl_->shapes[slot] = detail::Shape{};
+  }
   impl_->awakeBodySet.remove(id.index);
   impl_->bodyIds.freeId(id);
   b = detail::Body{};

@@ -23,7 +23,8 @@ const WorldDef& requireValidWorldDef(const WorldDef& def) {
 
 } // namespace
 
-WorldState::WorldState(const WorldDef& d) : def(requireValidWorldDef(d)), bodyIds(nextWorldNumber()) {}
+WorldState::WorldState(const WorldDef& d)
+    : def(requireValidWorldDef(d)), bodyIds(nextWorldNumber()), shapeIds(bodyIds.world()) {}
 
 Body& WorldState::body(BodyId id) {
   if (id.world != bodyIds.world() || !bodyIds.isValid({id.index, id.generation})) {
@@ -33,6 +34,15 @@ Body& WorldState::body(BodyId id) {
 }
 
 const Body& WorldState::body(BodyId id) const { return const_cast<WorldState*>(this)->body(id); }
+
+Shape& WorldState::shape(ShapeId id) {
+  if (id.world != shapeIds.world() || !shapeIds.isValid({id.index, id.generation})) {
+    throwInvalid("shape", id.index, "is not a live shape of this world (destroyed, null or another world's)");
+  }
+  return shapes[id.index];
+}
+
+const Shape& WorldState::shape(ShapeId id) const { return const_cast<WorldState*>(this)->shape(id); }
 
 } // namespace detail
 

@@ -6,6 +6,7 @@
 #include <impetus/core/id_pool.hpp>
 #include <impetus/math/scalar.hpp>
 #include <impetus/math/transform3.hpp>
+#include <impetus/rigid3d/geometry.hpp>
 #include <impetus/rigid3d/types.hpp>
 #include <impetus/rigid3d/world.hpp>
 
@@ -13,6 +14,18 @@
 #include <vector>
 
 namespace impetus::rigid3d::detail {
+
+/// A shape's record.
+struct Shape {
+  ShapeGeometry geometry;
+  std::uint32_t body = 0; ///< body slot
+  float density = 0.0f;
+  float friction = 0.0f;
+  float restitution = 0.0f;
+  std::uint64_t userData = 0;
+  ShapeId id;
+  bool alive = false;
+};
 
 /// A body's record (the cold side: what the game reads and sets between steps).
 struct Body {
@@ -30,7 +43,8 @@ struct Body {
   float linearDamping = 0.0f, angularDamping = 0.0f, gravityScale = 1.0f;
   AxisLocks locks;
   bool allowFastRotation = false;
-  std::uint32_t solverIndex = 0; ///< this step's index into the solver arrays (moving bodies)
+  std::uint32_t solverIndex = 0;     ///< this step's index into the solver arrays (moving bodies)
+  std::vector<std::uint32_t> shapes; ///< shape slots, in creation order
   std::uint64_t userData = 0;
   BodyId id;
   bool alive = false;
@@ -77,7 +91,9 @@ struct StepContext {
 struct WorldState {
   WorldDef def;
   IdPool bodyIds;
-  std::vector<Body> bodies; ///< by slot
+  IdPool shapeIds;
+  std::vector<Body> bodies;  ///< by slot
+  std::vector<Shape> shapes; ///< by slot
   solver::SlotList awakeBodySet;
   std::vector<std::uint32_t> awakeBodies; ///< this step's moving bodies, in solver order
   std::vector<BodyState> states;
@@ -86,6 +102,8 @@ struct WorldState {
   explicit WorldState(const WorldDef& d);
   Body& body(BodyId id);
   [[nodiscard]] const Body& body(BodyId id) const;
+  Shape& shape(ShapeId id);
+  [[nodiscard]] const Shape& shape(ShapeId id) const;
 };
 
 /// v with the components along the locked world axes removed.
@@ -164,6 +182,11 @@ struct GyroscopicStep {
 void requireValidMassData(const MassData& data);
 /// Gives the body its mass properties (dynamic) or none (static, kinematic).
 void applyMassData(Body& b, const MassData& data);
+
+// shapes.cpp
+/// A dynamic body's mass properties from its shapes (the default MassData while they have no
+/// mass), applied.
+void updateMassFromShapes(WorldState& w, Body& b);
 
 } // namespace impetus::rigid3d::detail
 

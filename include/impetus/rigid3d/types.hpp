@@ -13,6 +13,7 @@
 namespace impetus::rigid3d {
 
 using BodyId = Id<struct BodyTag>;
+using ShapeId = Id<struct ShapeTag>;
 
 enum class BodyType {
   staticBody,    ///< never moves, infinite mass
@@ -51,9 +52,19 @@ struct BodyDef {
   /// Lets the body spin faster than a quarter turn a substep (a wheel, a rotor); otherwise its
   /// spin is capped there, where the rotation deltas stop meaning what they say.
   bool allowFastRotation = false;
-  /// A dynamic body's mass properties. Absent: 1 kg at the body origin with a unit inertia
-  /// tensor (1 kg m^2 about every axis) until set (World::setMassData).
+  /// A dynamic body's mass properties. Absent: its shapes' (World::createShape), or while it has
+  /// none with mass, 1 kg at the body origin with a unit inertia tensor (1 kg m^2 about every
+  /// axis). Setting them (here or World::setMassData) holds them until a shape is added or
+  /// removed.
   std::optional<MassData> massData;
+  std::uint64_t userData = 0;
+};
+
+/// A shape's material and mass. Friction and restitution act once contacts land.
+struct ShapeDef {
+  float density = 1000.0f;  ///< kg/m^3 (water's by default): the body's mass comes from its shapes'
+  float friction = 0.6f;    ///< Coulomb coefficient
+  float restitution = 0.0f; ///< 0 to 1
   std::uint64_t userData = 0;
 };
 

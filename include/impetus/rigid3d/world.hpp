@@ -1,6 +1,6 @@
 // The 3D world (ch. 11-12): rigid bodies with quaternion orientation and full inertia tensors,
-// stepped in substeps as the 2D world is. This first part of it moves bodies under gravity,
-// forces, torques and impulses; shapes, collision, contacts and joints come next
+// stepped in substeps as the 2D world is. So far it moves bodies under gravity, forces, torques
+// and impulses, with their mass from their shapes; collision, contacts and joints come next
 // (docs/rigid3d.md says what is there).
 //
 // Each step, `substeps` times: integrate velocities (gravity, forces and torques; the gyroscopic
@@ -12,6 +12,7 @@
 #pragma once
 
 #include <impetus/math/transform3.hpp>
+#include <impetus/rigid3d/geometry.hpp>
 #include <impetus/rigid3d/types.hpp>
 
 #include <cstdint>
@@ -39,6 +40,16 @@ public:
   [[nodiscard]] bool isValid(BodyId id) const noexcept;
   [[nodiscard]] std::uint32_t bodyCount() const noexcept;
   void bodyIds(std::vector<BodyId>& out) const;
+
+  /// A shape on a body, in its frame. A dynamic body's mass properties become its shapes' (the
+  /// composite about their common centre of mass). Throws impetus::Error for invalid geometry
+  /// (requireValidGeometry) or a negative or non-finite density.
+  ShapeId createShape(BodyId body, const ShapeDef& def, const ShapeGeometry& geometry);
+  void destroyShape(ShapeId id);
+  [[nodiscard]] bool isValid(ShapeId id) const noexcept;
+  [[nodiscard]] BodyId shapeBody(ShapeId id) const;
+  [[nodiscard]] ShapeGeometry shapeGeometry(ShapeId id) const;
+  void bodyShapes(BodyId body, std::vector<ShapeId>& out) const;
 
   [[nodiscard]] BodyType bodyType(BodyId id) const;
   /// The body origin's frame in the world.
