@@ -4,6 +4,8 @@
 #include <impetus/math/scalar.hpp>
 #include <impetus/rigid3d/world.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -236,51 +238,44 @@ TEST(Rigid3dBody, ids_are_generational_and_belong_to_their_world) {
   EXPECT_EQ(world.bodyCount(), 1U);
 }
 
-/// The message of the Error that `f` throws (empty if none).
-template <class F> std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return {};
-}
-
 TEST(Rigid3dBody, bad_input_is_refused_naming_the_field) {
   World world;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   BodyDef def = dynamicBody();
   def.position.y = nan;
-  EXPECT_NE(errorOf([&] { world.createBody(def); }).find("position.y"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createBody(def); }).find("position.y"), std::string::npos);
   def = dynamicBody();
   def.rotation = Quatf{0.0f, 0.0f, 0.0f, 0.0f};
-  EXPECT_NE(errorOf([&] { world.createBody(def); }).find("rotation"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createBody(def); }).find("rotation"), std::string::npos);
   def = dynamicBody();
   def.massData = MassData{-1.0f, {}, Mat33f::identity()};
-  EXPECT_NE(errorOf([&] { world.createBody(def); }).find("mass"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createBody(def); }).find("mass"), std::string::npos);
   def.massData = MassData{1.0f, {}, Mat33f{1.0f, 0.5f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f}};
-  EXPECT_NE(errorOf([&] { world.createBody(def); }).find("symmetric"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createBody(def); }).find("symmetric"), std::string::npos);
   def.massData = MassData{1.0f, {}, Mat33f::diagonal({1.0f, 1.0f, 3.0f})};
-  EXPECT_NE(errorOf([&] { world.createBody(def); }).find("triangle inequality"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createBody(def); }).find("triangle inequality"), std::string::npos);
   def.massData = MassData{1.0f, {}, Mat33f::diagonal({1.0f, 1.0f, -1.0f})};
-  EXPECT_NE(errorOf([&] { world.createBody(def); }).find("principal moment"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createBody(def); }).find("principal moment"), std::string::npos);
   def.massData = MassData{1.0f, {}, Mat33f::diagonal({1.0f, 1.0f, 0.0f})}; // a rod: no moment about itself
-  EXPECT_NE(errorOf([&] { world.createBody(def); }).find("positive definite"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createBody(def); }).find("positive definite"), std::string::npos);
   def.massData = MassData{1.0f, {nan, 0.0f, 0.0f}, Mat33f::identity()};
-  EXPECT_NE(errorOf([&] { world.createBody(def); }).find("center.x"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createBody(def); }).find("center.x"), std::string::npos);
   def = dynamicBody();
   def.linearDamping = -1.0f;
-  EXPECT_NE(errorOf([&] { world.createBody(def); }).find("linearDamping"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createBody(def); }).find("linearDamping"), std::string::npos);
   const BodyId body = world.createBody(dynamicBody());
-  EXPECT_NE(errorOf([&] { world.applyForceToCenter(body, {nan, 0.0f, 0.0f}); }).find("force.x"), std::string::npos);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(thrownMessage([&] {
+              world.applyForceToCenter(body, {nan, 0.0f, 0.0f});
+            }).find("force.x"),
+            std::string::npos);
+  EXPECT_NE(thrownMessage([&] {
               world.setTransform(body, {}, Quatf{nan, 0.0f, 0.0f, 0.0f});
             }).find("rotation"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { world.step(0.0f); }).find("dt"), std::string::npos);
-  EXPECT_NE(errorOf([&] { world.step(5.0f); }).find("dt"), std::string::npos);
-  EXPECT_NE(errorOf([] { World{WorldDef{{}, 0}}; }).find("substeps"), std::string::npos);
-  EXPECT_NE(errorOf([&] { world.setGravity({0.0f, nan, 0.0f}); }).find("gravity.y"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.step(0.0f); }).find("dt"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.step(5.0f); }).find("dt"), std::string::npos);
+  EXPECT_NE(thrownMessage([] { World{WorldDef{{}, 0}}; }).find("substeps"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.setGravity({0.0f, nan, 0.0f}); }).find("gravity.y"), std::string::npos);
   // Nothing refused left a trace.
   EXPECT_EQ(world.bodyCount(), 1U);
 }

@@ -4,6 +4,8 @@
 #include <impetus/math/scalar.hpp>
 #include <impetus/rigid3d/world.hpp>
 
+#include "support/error_field.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -125,37 +127,30 @@ TEST(Rigid3dShape, a_dumbbell_spun_about_its_bar_keeps_turning_about_it) {
   EXPECT_NEAR(world.linearVelocity(body).y, -20.0f, 1e-4f);
 }
 
-/// The message of the Error that `f` throws (empty if none).
-template <class F> std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return {};
-}
-
 TEST(Rigid3dShape, bad_geometry_is_refused_naming_the_field) {
   World world;
   BodyDef def;
   def.type = BodyType::dynamicBody;
   const BodyId body = world.createBody(def);
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_NE(errorOf([&] { world.createShape(body, {}, Sphere{{}, -1.0f}); }).find("radius"), std::string::npos);
-  EXPECT_NE(errorOf([&] { world.createShape(body, {}, Sphere{{}, 0.001f}); }).find("radius"), std::string::npos);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(thrownMessage([&] { world.createShape(body, {}, Sphere{{}, -1.0f}); }).find("radius"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createShape(body, {}, Sphere{{}, 0.001f}); }).find("radius"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] {
               world.createShape(body, {}, Sphere{{nan, 0.0f, 0.0f}, 1.0f});
             }).find("center.x"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(thrownMessage([&] {
               world.createShape(body, {}, Capsule{{}, {0.001f, 0.0f, 0.0f}, 0.1f});
             }).find("capsule length"),
             std::string::npos);
   ShapeDef negative;
   negative.density = -1.0f;
-  EXPECT_NE(errorOf([&] { world.createShape(body, negative, Sphere{{}, 1.0f}); }).find("density"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] {
+              world.createShape(body, negative, Sphere{{}, 1.0f});
+            }).find("density"),
+            std::string::npos);
   world.destroyBody(body);
-  EXPECT_NE(errorOf([&] { world.createShape(body, {}, Sphere{{}, 1.0f}); }).find("body"), std::string::npos);
+  EXPECT_NE(thrownMessage([&] { world.createShape(body, {}, Sphere{{}, 1.0f}); }).find("body"), std::string::npos);
 }
 
 TEST(Rigid3dShape, destroying_a_body_destroys_its_shapes) {
