@@ -5,7 +5,13 @@
 #include <impetus/rigid3d/constants.hpp>
 #include <impetus/rigid3d/geometry.hpp>
 
+#include <impetus/core/mesh_mass.hpp>
+
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
 
 namespace impetus::rigid3d {
 
@@ -21,6 +27,72 @@ void requireRadius(float radius) {
 
 } // namespace
 
+namespace {
+
+/// How far a hull's point may lie in front of a face's plane, or a face's point off it, and the
+/// hull still count as convex and flat-faced, relative to the hull's size: the rounding of its
+/// points and planes in float.
+constexpr float convexityTolerance = 1.0e-5f;
+
+/// The hull's faces as triangle fans, for the divergence theorem.
+std::vector<TriangleIndices> fanTriangles(const Hull& hull) {
+  std::vector<TriangleIndices> triangles;
+  for (const std::uint16_t first : hull.faceEdges) {
+    const std::uint32_t apex = hull.edges[first].origin;
+    for (std::uint16_t e = hull.edges[first].next; hull.edges[e].next != first; e = hull.edges[e].next) {
+      triangles.push_back({apex, hull.edges[e].origin, hull.edges[hull.edges[e].next].origin});
+    }
+  }
+  return triangles;
+}
+
+std::vector<Vec3d> pointsInDouble(const Hull& hull) {
+  std::vector<Vec3d> points;
+  points.reserve(hull.points.size());
+  for (const Vec3f& p : hull.points) {
+    points.push_back(toDouble(p));
+  }
+  return points;
+}
+
+void requireValidHull(const Hull& hull) {
+  if (hull.points.size() < 4 || hull.faceEdges.size() < 4) {
+    throwInvalid("hull points", static_cast<double>(hull.points.size()),
+                 "a hull has at least four points and four faces (a solid, not a polygon)");
+  }
+  float size = 0.0f;
+  for (const Vec3f& p : hull.points) {
+    size = std::max(size, length(requireFinite(p, "hull point")));
+  }
+  const float tolerance = convexityTolerance * std::max(size, 1.0f);
+  if (hull.planes.size() != hull.faceEdges.size()) {
+    throwInvalid("hull planes", static_cast<double>(hull.planes.size()), "must be one per face");
+  }
+  for (std::size_t f = 0; f < hull.faceEdges.size(); ++f) {
+    const std::uint16_t first = hull.faceEdges[f];
+    std::uint16_t e = first;
+    do {
+      const Vec3f& p = hull.points[hull.edges[e].origin];
+      if (const float off = dot(hull.planes[f].normal, p) - hull.planes[f].offset; std::abs(off) > tolerance) {
+        throwInvalid("hull face " + std::to_string(f) + " point off its plane", off,
+                     "a hull's faces are flat, each on its plane");
+      }
+      e = hull.edges[e].next;
+    } while (e != first);
+  }
+  for (std::size_t f = 0; f < hull.planes.size(); ++f) {
+    for (const Vec3f& p : hull.points) {
+      if (const float ahead = dot(hull.planes[f].normal, p) - hull.planes[f].offset; ahead > tolerance) {
+        throwInvalid("hull face " + std::to_string(f) + " point ahead", ahead, "the hull must be convex");
+      }
+    }
+  }
+  // Closed and wound outward: the divergence theorem's checks.
+  (void)meshMassProperties(pointsInDouble(hull), fanTriangles(hull), 1.0);
+}
+
+} // namespace
+
 void requireValidGeometry(const ShapeGeometry& geometry) {
   if (const auto* sphere = std::get_if<Sphere>(&geometry)) {
     requireFinite(sphere->center, "center");
@@ -32,6 +104,8 @@ void requireValidGeometry(const ShapeGeometry& geometry) {
     if (const float length = impetus::length(capsule->center2 - capsule->center1); !(length >= linearSlop)) {
       throwInvalid("capsule length", length, "must be at least linearSlop (0.005 m): a shorter capsule is a sphere");
     }
+  } else {
+    requireValidHull(std::get<Hull>(geometry));
   }
 }
 
@@ -44,6 +118,11 @@ MassProperties3 massProperties(const ShapeGeometry& geometry, double density) {
     out.centerOfMass = toDouble(sphere->center);
     out.inertia = Mat33d::identity() * (0.4 * out.mass * r * r);
     return out;
+  }
+  if (const auto* hull = std::get_if<Hull>(&geometry)) {
+    // The divergence theorem over the faces' fans (core's meshMassProperties), exact for any
+    // closed polyhedron.
+    return density > 0.0 ? meshMassProperties(pointsInDouble(*hull), fanTriangles(*hull), density) : out;
   }
   const auto& capsule = std::get<Capsule>(geometry);
   // A cylinder of length l and two hemispherical caps, each with its centroid 3r/8 from its
