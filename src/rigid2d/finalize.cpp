@@ -15,16 +15,25 @@ namespace impetus::rigid2d::detail {
 
 namespace {
 
-/// Gives each of the body's shapes whose box left its fat box a new fat box and marks it;
-/// true if any grew. Writes only the body's own shapes' entries, so bodies run on threads.
+/// Gives the shape a new fat box if its box (a moving shape's reach) left the old one; true if
+/// so. Writes only the shape's own fat box, so bodies run on threads.
+bool growFatBox(WorldState& w, const Shape& s, std::uint32_t slot, const Body& b) {
+  const bool isStatic = b.type == BodyType::staticBody;
+  const AABB box = isStatic ? shapeBox(s, b.transform) : reachBox(s, b.transform);
+  if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
+    fatBox = enlarge(box, isStatic ? 0.0f : s.margin);
+    return true;
+  }
+  return false;
+}
+
+/// Grows each of the body's shapes' fat boxes that its box left and marks the shape; true if any
+/// grew.
 bool growFatBoxes(WorldState& w, const Body& b) {
   bool grew = false;
   for (const std::uint32_t slot : b.shapes) {
     Shape& s = w.shapes[slot];
-    const bool isStatic = b.type == BodyType::staticBody;
-    const AABB box = isStatic ? shapeBox(s, b.transform) : reachBox(s, b.transform);
-    if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
-      fatBox = enlarge(box, isStatic ? 0.0f : s.margin);
+    if (growFatBox(w, s, slot, b)) {
       s.fatBoxGrown = true;
       grew = true;
     }
@@ -37,9 +46,7 @@ bool growFatBoxes(WorldState& w, const Body& b) {
 bool growOnlyFatBox(WorldState& w, const Body& b, GrownProxy& grown) {
   const std::uint32_t slot = b.shapes.front();
   const Shape& s = w.shapes[slot];
-  const AABB box = reachBox(s, b.transform);
-  if (AABB& fatBox = w.fatBoxes[slot]; !contains(fatBox, box)) {
-    fatBox = enlarge(box, s.margin);
+  if (growFatBox(w, s, slot, b)) {
     grown = {slot, s.proxy};
     return true;
   }

@@ -7,6 +7,7 @@
 #include <impetus/math/vec3.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace impetus::rigid3d {
@@ -31,6 +32,18 @@ struct Hull {
   std::vector<std::uint16_t> faceEdges; ///< a half-edge of each face
   std::vector<HullPlane> planes;        ///< each face's plane
 };
+
+/// The most vertices a hull made from points keeps (computeHull): a rounded shape of more is
+/// better a sphere or capsule, and the collision's cost grows with the count.
+inline constexpr int maxHullVertices = 64;
+
+/// The convex hull of a cloud of points (quickhull), its coplanar triangles merged into faces.
+/// At most `maxVertices` (4 to maxHullVertices) of the points become vertices, the most extreme
+/// first: beyond the cap the hull is that of those, and the other points may lie a little
+/// outside it. Points within a few float epsilons of the cloud's extent of a face count as on it
+/// (not vertices). Throws impetus::Error for fewer than four points, non-finite ones, or a cloud
+/// without volume (all at one place, on a line or in a plane), naming which.
+[[nodiscard]] Hull computeHull(std::span<const Vec3f> points, int maxVertices = maxHullVertices);
 
 /// A box of the given half extents (each at least linearSlop; otherwise impetus::Error naming
 /// `halfExtents`), centred at `center` and turned by `rotation` in the body frame.
