@@ -8,4 +8,8 @@ namespace impetus::rigid3d {
 /// resting contacts do not jitter; shapes smaller than it are refused. m.
 inline constexpr float linearSlop = 0.005f;
 
+/// Contact points are kept while the shapes are closer than this, before they touch, so the
+/// solver stops an approach before it becomes an overlap (speculative contacts). m.
+inline constexpr float speculativeDistance = 4.0f * linearSlop;
+
 } // namespace impetus::rigid3d
