@@ -2,7 +2,8 @@
 // the separation at each, the normal from shape A to shape B, and feature ids that stay the same
 // while the same features touch (warm starting carries impulses by them). Points are kept while
 // the separation is below speculativeDistance, so a contact acts before the shapes overlap. The
-// round shapes' pairs so far (closest points); hulls come with GJK and the separating-axis test.
+// round shapes' pairs and a hull against a sphere so far; hull pairs come with the separating-
+// axis test.
 #pragma once
 
 #include <impetus/math/transform3.hpp>
@@ -33,6 +34,10 @@ struct Manifold {
 [[nodiscard]] Manifold collideSpheres(const Sphere& a, const Transform3f& xfA, const Sphere& b, const Transform3f& xfB);
 [[nodiscard]] Manifold collideCapsuleAndSphere(const Capsule& a, const Transform3f& xfA, const Sphere& b,
                                                const Transform3f& xfB);
+/// A hull against a sphere: the closest points of the hull and the sphere's centre (GJK), or,
+/// with the centre inside the hull, the face it is least deep behind.
+[[nodiscard]] Manifold collideHullAndSphere(const Hull& a, const Transform3f& xfA, const Sphere& b,
+                                            const Transform3f& xfB);
 /// Two points where the capsules lie side by side (their axes within parallelCapsuleAngle and
 /// their spans overlapping), one at the closest points of their segments otherwise.
 [[nodiscard]] Manifold collideCapsules(const Capsule& a, const Transform3f& xfA, const Capsule& b,
