@@ -96,3 +96,61 @@ TEST(Rigid3dDistance, a_sphere_on_a_box_and_one_sunk_into_it) {
 
 } // namespace
 } // namespace impetus::rigid3d
+
+namespace impetus::rigid3d {
+namespace {
+
+TEST(Rigid3dDistance, a_capsule_lying_on_a_box_touches_it_at_both_ends_standing_at_one) {
+  // A box whose top face is y = 0 (2 x 2 m), a capsule of radius 0.1 lying 5 mm above it along
+  // x, from x = -0.5 to 1.5: clipped to the face, points at x = -0.5 and x = 1.
+  const Hull box = makeBoxHull({1.0f, 0.5f, 1.0f});
+  const Transform3f xfA{{0.0f, -0.5f, 0.0f}, Quatf::identity()};
+  const Capsule capsule{{-0.5f, 0.0f, 0.0f}, {1.5f, 0.0f, 0.0f}, 0.1f};
+  const Manifold lying = collideHullAndCapsule(box, xfA, capsule, {{0.0f, 0.105f, 0.3f}, Quatf::identity()});
+  ASSERT_EQ(lying.pointCount, 2);
+  EXPECT_NEAR(lying.normal.y, 1.0f, 1e-6f);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_NEAR(lying.points[static_cast<std::size_t>(k)].separation, 0.005f, 1e-6f);
+    EXPECT_NEAR(lying.points[static_cast<std::size_t>(k)].point.z, 0.3f, 1e-6f);
+  }
+  EXPECT_NEAR(std::min(lying.points[0].point.x, lying.points[1].point.x), -0.5f, 1e-5f);
+  EXPECT_NEAR(std::max(lying.points[0].point.x, lying.points[1].point.x), 1.0f, 1e-5f);
+  // Sunk 2 cm into the face: the same two points, 2 cm deep.
+  const Manifold sunk = collideHullAndCapsule(box, xfA, capsule, {{0.0f, 0.08f, 0.3f}, Quatf::identity()});
+  ASSERT_EQ(sunk.pointCount, 2);
+  EXPECT_NEAR(sunk.points[0].separation, -0.02f, 1e-6f);
+  EXPECT_NEAR(sunk.points[1].separation, -0.02f, 1e-6f);
+  // Standing on its end, 1 cm up: one point under it.
+  const Capsule upright{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.1f};
+  const Manifold standing = collideHullAndCapsule(box, xfA, upright, {{0.2f, 0.11f, -0.2f}, Quatf::identity()});
+  ASSERT_EQ(standing.pointCount, 1);
+  EXPECT_NEAR(standing.normal.y, 1.0f, 1e-6f);
+  EXPECT_NEAR(standing.points[0].separation, 0.01f, 1e-6f);
+  EXPECT_NEAR(standing.points[0].point.x, 0.2f, 1e-5f);
+  // Tilted 30 degrees, its lower end 1 cm up: one point, under the lower end.
+  const Quatf tilt = Quatf::fromAxisAngle({0.0f, 0.0f, 1.0f}, 0.5236f);
+  const Manifold tilted = collideHullAndCapsule(box, xfA, capsule, {{0.0f, 0.11f + 0.25f, 0.0f}, tilt});
+  ASSERT_EQ(tilted.pointCount, 1);
+  EXPECT_NEAR(tilted.points[0].separation, 0.01f + 0.25f - 0.25f, 1e-3f);
+}
+
+TEST(Rigid3dDistance, the_hull_capsule_manifold_is_the_same_in_any_frame) {
+  const Hull box = makeBoxHull({0.6f, 0.3f, 0.4f}, {0.1f, 0.0f, -0.1f}, Quatf::fromAxisAngle({1.0f, 1.0f, 0.0f}, 0.3f));
+  const Capsule capsule{{-0.4f, 0.0f, 0.1f}, {0.5f, 0.05f, -0.2f}, 0.08f};
+  const Transform3f xfA{{0.0f, -0.2f, 0.0f}, Quatf::fromAxisAngle({0.0f, 1.0f, 0.0f}, 0.2f)};
+  const Transform3f xfB{{0.05f, 0.15f, 0.0f}, Quatf::fromAxisAngle({0.0f, 0.0f, 1.0f}, 0.1f)};
+  const Transform3f world{{-20.0f, 4.0f, 7.0f}, Quatf::fromAxisAngle({1.0f, 0.0f, 1.0f}, 2.0f)};
+  const Manifold here = collideHullAndCapsule(box, xfA, capsule, xfB);
+  const Manifold there = collideHullAndCapsule(box, mul(world, xfA), capsule, mul(world, xfB));
+  ASSERT_GT(here.pointCount, 0);
+  ASSERT_EQ(here.pointCount, there.pointCount);
+  for (int k = 0; k < here.pointCount; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    EXPECT_NEAR(here.points[i].separation, there.points[i].separation, 1e-5f);
+    const Vec3f moved = transformPoint(world, here.points[i].point);
+    EXPECT_NEAR(length(moved - there.points[i].point), 0.0f, 2e-5f);
+  }
+}
+
+} // namespace
+} // namespace impetus::rigid3d

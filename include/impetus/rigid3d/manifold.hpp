@@ -38,6 +38,12 @@ struct Manifold {
 /// with the centre inside the hull, the face it is least deep behind.
 [[nodiscard]] Manifold collideHullAndSphere(const Hull& a, const Transform3f& xfA, const Sphere& b,
                                             const Transform3f& xfB);
+/// A hull against a capsule: two points where the capsule lies along a face (its axis within
+/// about 3 degrees of the face's plane: the segment clipped to the face), else one at the closest
+/// points of the hull and the segment, or, with the segment inside, at its deeper end behind the
+/// face it is least deep behind.
+[[nodiscard]] Manifold collideHullAndCapsule(const Hull& a, const Transform3f& xfA, const Capsule& b,
+                                             const Transform3f& xfB);
 /// Two points where the capsules lie side by side (their axes within parallelCapsuleAngle and
 /// their spans overlapping), one at the closest points of their segments otherwise.
 [[nodiscard]] Manifold collideCapsules(const Capsule& a, const Transform3f& xfA, const Capsule& b,
