@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace impetus::rigid3d {
 
@@ -96,14 +97,9 @@ BodyId World::createBody(const BodyDef& def) {
   }
   b.center = b.transform.p;
   detail::applyMassData(b, mass);
-  const BodyId id = w.bodyIds.allocateId<BodyTag>();
-  b.id = id;
-  b.alive = true;
-  if (id.index >= w.bodies.size()) {
-    w.bodies.resize(id.index + 1);
-  }
-  w.bodies[id.index] = b;
-  if (b.moving()) {
+  const bool moving = b.type != BodyType::staticBody;
+  const BodyId id = detail::placeRecord<BodyTag>(w.bodyIds, w.bodies, std::move(b));
+  if (moving) {
     w.awakeBodySet.add(id.index);
   }
   return id;

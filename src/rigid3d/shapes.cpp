@@ -5,6 +5,7 @@
 #include <impetus/error.hpp>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace impetus::rigid3d {
@@ -54,13 +55,7 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const ShapeGeometry
   s.friction = static_cast<float>(requireNonNegative(def.friction, "friction"));
   s.restitution = static_cast<float>(requireNonNegative(def.restitution, "restitution"));
   s.userData = def.userData;
-  const ShapeId id = w.shapeIds.allocateId<ShapeTag>();
-  s.id = id;
-  s.alive = true;
-  if (id.index >= w.shapes.size()) {
-    w.shapes.resize(id.index + 1);
-  }
-  w.shapes[id.index] = s;
+  const ShapeId id = detail::placeRecord<ShapeTag>(w.shapeIds, w.shapes, std::move(s));
   b.shapes.push_back(id.index);
   detail::updateMassFromShapes(w, b);
   return id;

@@ -11,6 +11,7 @@
 #include <impetus/rigid3d/world.hpp>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace impetus::rigid3d::detail {
@@ -105,6 +106,19 @@ struct WorldState {
   Shape& shape(ShapeId id);
   [[nodiscard]] const Shape& shape(ShapeId id) const;
 };
+
+/// Gives `record` a new id from `ids` and keeps it in the id's slot of `pool` (grown as needed):
+/// the records live where their ids say.
+template <class Tag, class Record> Id<Tag> placeRecord(IdPool& ids, std::vector<Record>& pool, Record record) {
+  const Id<Tag> id = ids.allocateId<Tag>();
+  record.id = id;
+  record.alive = true;
+  if (id.index >= pool.size()) {
+    pool.resize(id.index + 1);
+  }
+  pool[id.index] = std::move(record);
+  return id;
+}
 
 /// v with the components along the locked world axes removed.
 [[nodiscard]] inline Vec3f withoutLockedLinear(Vec3f v, const AxisLocks& locks) {
