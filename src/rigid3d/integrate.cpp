@@ -1,10 +1,14 @@
-// The 3D world's step for its bodies: the stages of the soft step that move them (prepare,
-// integrate velocities, integrate positions, finalize), substep after substep. The stages that
-// solve contacts and joints between them come with the shapes.
+// The 3D world's step: the stages of the soft step (after Erin Catto's Solver2D and Box2D v3),
+// in order. Collide at the step's start; prepare the bodies and contacts; then, substep after
+// substep: integrate velocities, warm start the contacts with their impulses, solve them with
+// bias (overlap pushed apart softly), integrate positions (within the speed caps), relax (solve
+// again without bias, taking back the velocity the push added, and friction); then restitution,
+// and the impulses and results stored.
 #include "rigid3d/world_impl.hpp"
 
 #include <impetus/math/scalar.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace impetus::rigid3d::detail {
@@ -41,7 +45,7 @@ void integrateVelocity(BodyState& s, const BodySim& sim, float h) {
   s.w = withoutLockedAngular(s.w, sim.locks);
 }
 
-/// Holds a dynamic body's speeds within the world's caps: the linear speed cap, and a quarter
+/// Holds a body's speeds within the world's caps: the linear speed cap, and a quarter
 /// turn a substep unless the body allows fast rotation.
 void capVelocity(BodyState& s, const BodySim& sim, const StepContext& context) {
   if (const float v2 = lengthSquared(s.v); v2 > context.maxLinearSpeed * context.maxLinearSpeed) {
@@ -71,6 +75,11 @@ StepContext makeStepContext(const WorldState& w, float dt) {
   c.inverseH = 1.0f / c.h;
   c.maxLinearSpeed = w.def.maxLinearSpeed;
   c.maxAngularSpeed = maxRotationPerSubstep * c.inverseH;
+  c.maxContactPushSpeed = w.def.maxContactPushSpeed;
+  // A spring stiffer than a quarter of the substep rate is more than the substep can follow.
+  const float hertz = std::min(w.def.contactHertz, 0.25f * c.inverseH);
+  c.contactSoftness = solver::makeSoft(hertz, w.def.contactDampingRatio, c.h);
+  c.staticContactSoftness = solver::makeSoft(2.0f * hertz, w.def.contactDampingRatio, c.h);
   return c;
 }
 
@@ -80,8 +89,9 @@ void prepareBodies(WorldState& w) {
   const auto awake = w.awakeBodySet.items();
   w.awakeBodies.assign(awake.begin(), awake.end());
   const auto n = w.awakeBodies.size();
-  w.states.resize(n);
+  w.states.resize(n + 1);
   w.sims.resize(n);
+  w.states[n] = BodyState{}; // the static bodies' state: at rest, never written
   for (std::size_t i = 0; i < n; ++i) {
     Body& b = w.bodies[w.awakeBodies[i]];
     b.solverIndex = static_cast<std::uint32_t>(i);
@@ -149,18 +159,27 @@ GyroscopicStep gyroscopicStep(const Quatf& rotation, const Mat33f& inertia, cons
 void solve(WorldState& w, float dt) {
   const StepContext context = makeStepContext(w, dt);
   prepareBodies(w);
+  updateContacts(w);
+  prepareContacts(w, context);
+  const std::size_t n = w.sims.size();
   for (int substep = 0; substep < context.substeps; ++substep) {
-    for (std::size_t i = 0; i < w.states.size(); ++i) {
-      const BodySim& sim = w.sims[i];
-      if (sim.dynamic) {
-        integrateVelocity(w.states[i], sim, context.h);
-        capVelocity(w.states[i], sim, context);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (w.sims[i].dynamic) {
+        integrateVelocity(w.states[i], w.sims[i], context.h);
       }
     }
-    for (BodyState& s : w.states) {
-      integratePosition(s, context.h);
+    warmStartContacts(w);
+    solveContacts(w, context, true);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (w.sims[i].dynamic) {
+        capVelocity(w.states[i], w.sims[i], context);
+      }
+      integratePosition(w.states[i], context.h);
     }
+    solveContacts(w, context, false);
   }
+  applyRestitution(w);
+  storeImpulses(w);
   finalizeBodies(w);
 }
 

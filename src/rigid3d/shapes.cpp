@@ -54,6 +54,9 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const ShapeGeometry
   s.density = static_cast<float>(requireNonNegative(def.density, "density"));
   s.friction = static_cast<float>(requireNonNegative(def.friction, "friction"));
   s.restitution = static_cast<float>(requireNonNegative(def.restitution, "restitution"));
+  if (s.restitution > 1.0f) {
+    throwInvalid("restitution", s.restitution, "must be at most 1 (a bounce gains no energy)");
+  }
   s.userData = def.userData;
   const ShapeId id = detail::placeRecord<ShapeTag>(w.shapeIds, w.shapes, std::move(s));
   b.shapes.push_back(id.index);

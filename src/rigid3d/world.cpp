@@ -6,6 +6,8 @@
 #include <impetus/math/validate.hpp>
 #include <impetus/rigid3d/world.hpp>
 
+#include <algorithm>
+
 namespace impetus::rigid3d {
 
 namespace detail {
@@ -18,6 +20,10 @@ const WorldDef& requireValidWorldDef(const WorldDef& def) {
     throwInvalid("substeps", def.substeps, "must be between 1 and 64");
   }
   requirePositive(def.maxLinearSpeed, "maxLinearSpeed");
+  requireNonNegative(def.contactHertz, "contactHertz");
+  requireNonNegative(def.contactDampingRatio, "contactDampingRatio");
+  requirePositive(def.maxContactPushSpeed, "maxContactPushSpeed");
+  requireNonNegative(def.restitutionThreshold, "restitutionThreshold");
   return def;
 }
 
@@ -69,6 +75,30 @@ void World::shiftOrigin(const Vec3f& newOrigin) {
       b.center -= newOrigin;
     }
   }
+}
+
+void World::contacts(std::vector<ContactData>& out) const {
+  out.clear();
+  for (const detail::Contact& c : impl_->contacts) {
+    if (c.manifold.pointCount == 0) {
+      continue;
+    }
+    ContactData d;
+    d.shapeA = impl_->shapes[c.shapeA].id;
+    d.shapeB = impl_->shapes[c.shapeB].id;
+    d.manifold = c.manifold;
+    for (int k = 0; k < c.manifold.pointCount; ++k) {
+      const detail::PointImpulse& p = c.impulses[static_cast<std::size_t>(k)];
+      d.normalImpulses[static_cast<std::size_t>(k)] = p.normal;
+      d.tangentImpulses[static_cast<std::size_t>(k)] = c.tangent1 * p.tangent1 + c.tangent2 * p.tangent2;
+    }
+    out.push_back(d);
+  }
+}
+
+std::uint32_t World::contactCount() const noexcept {
+  return static_cast<std::uint32_t>(std::count_if(impl_->contacts.begin(), impl_->contacts.end(),
+                                                  [](const detail::Contact& c) { return c.manifold.pointCount > 0; }));
 }
 
 std::uint64_t World::stateHash() const {

@@ -1,7 +1,9 @@
 // The 3D world's internals: the bodies' records, the solver's per-body state, the world's state.
 #pragma once
 
+#include "rigid3d/contact.hpp"
 #include "solver/slot_list.hpp"
+#include "solver/softness.hpp"
 
 #include <impetus/core/id_pool.hpp>
 #include <impetus/math/scalar.hpp>
@@ -86,7 +88,10 @@ struct StepContext {
   float h = 0.0f;        ///< substep, s
   float inverseH = 0.0f; ///< 1/s
   float maxLinearSpeed = 0.0f;
-  float maxAngularSpeed = 0.0f; ///< rad/s: a quarter turn a substep
+  float maxAngularSpeed = 0.0f;           ///< rad/s: a quarter turn a substep
+  float maxContactPushSpeed = 0.0f;       ///< m/s
+  solver::Softness contactSoftness;       ///< between moving bodies
+  solver::Softness staticContactSoftness; ///< against a static or kinematic body: twice as stiff
 };
 
 struct WorldState {
@@ -97,10 +102,20 @@ struct WorldState {
   std::vector<Shape> shapes; ///< by slot
   solver::SlotList awakeBodySet;
   std::vector<std::uint32_t> awakeBodies; ///< this step's moving bodies, in solver order
+  /// The moving bodies' solver states, and one more at rest for the static bodies
+  /// (staticIndex(): contacts with a static body read it and never write it).
   std::vector<BodyState> states;
   std::vector<BodySim> sims;
+  /// The contacts, in the order of their keys (A's shape key, then B's): the pairs of shapes
+  /// whose boxes overlap, kept from step to step with their impulses.
+  std::vector<Contact> contacts;
+  /// This step's contact constraints: the contacts with points, in the contacts' order.
+  std::vector<ContactConstraint> constraints;
+  /// Scratch of the pair update, kept to spare allocations.
+  std::vector<Contact> nextContacts;
 
   explicit WorldState(const WorldDef& d);
+  [[nodiscard]] std::uint32_t staticIndex() const noexcept { return static_cast<std::uint32_t>(awakeBodies.size()); }
   Body& body(BodyId id);
   [[nodiscard]] const Body& body(BodyId id) const;
   Shape& shape(ShapeId id);
@@ -175,9 +190,29 @@ template <class Tag, class Record> Id<Tag> placeRecord(IdPool& ids, std::vector<
 inline constexpr float maxRotationPerSubstep = 0.25f * pi<float>;
 
 // integrate.cpp
-/// The step's solve of every moving body: velocities (gravity, forces, torques, gyroscopic,
-/// damping), speed caps and positions, substep after substep; writes the results back.
+/// The step's solve: the bodies' velocities (gravity, forces, torques, gyroscopic, damping),
+/// the contacts, the speed caps and positions, substep after substep; writes the results back.
 void solve(WorldState& w, float dt);
+
+// collide.cpp
+/// The broadphase's pairs of shapes whose boxes (grown by the speculative distance) overlap,
+/// as contacts (kept with their impulses where the pair was already touching), and each
+/// contact's manifold at the bodies' present poses.
+void updateContacts(WorldState& w);
+
+// contact_solver.cpp
+/// The constraints from the contacts with points, at the step's start: anchors, effective
+/// masses, warm-start impulses.
+void prepareContacts(WorldState& w, const StepContext& context);
+void warmStartContacts(WorldState& w);
+/// One pass over the contacts: with bias (overlap pushed apart softly) or without (relax: the
+/// push taken back; friction solved here only).
+void solveContacts(WorldState& w, const StepContext& context, bool useBias);
+/// Newton's law of restitution for the points that were approaching faster than the threshold
+/// and pushed: their normal velocity becomes e times the approach.
+void applyRestitution(WorldState& w);
+/// The impulses back into the contacts, for the next step's warm start.
+void storeImpulses(WorldState& w);
 /// A substep of torque-free rotation (Euler's equations I dw/dt = -w x (I w) in the body frame)
 /// by the implicit midpoint rule, which keeps both of the torque-free body's quadratic
 /// invariants, its kinetic energy w.(I w)/2 and |I w|^2, exactly up to the solve (the backward

@@ -7,18 +7,32 @@
 // geometry each time it solves; the parts below only need the row and the bodies' inverse masses.
 #pragma once
 
+#include <impetus/math/mat33.hpp>
+#include <impetus/math/vec3.hpp>
+
 namespace impetus::solver {
 
 // The angular algebra of a plane: an angular velocity is a scalar, and so is an inverse inertia.
-// (The 3D world adds the vector and matrix overloads.)
 [[nodiscard]] inline float angularDot(float a, float b) { return a * b; }
 [[nodiscard]] inline float inverseInertiaTimes(float inverseInertia, float angular) { return inverseInertia * angular; }
 [[nodiscard]] inline float angularLength(float a) { return a < 0.0f ? -a : a; }
 [[nodiscard]] inline double preciseAngularDot(float a, float b) { return static_cast<double>(a) * b; }
-/// dot in double, for any vector with x and y (and z, for the 3D overload).
+/// dot in double, for any vector with x and y (the 3D overload below adds z).
 template <class Vec> [[nodiscard]] inline double preciseDot(const Vec& a, const Vec& b) {
   return static_cast<double>(a.x) * b.x + static_cast<double>(a.y) * b.y;
 }
+
+// The angular algebra of space: an angular velocity is a vector, an inverse inertia a matrix
+// (world axes).
+[[nodiscard]] inline float angularDot(const Vec3f& a, const Vec3f& b) { return dot(a, b); }
+[[nodiscard]] inline Vec3f inverseInertiaTimes(const Mat33f& inverseInertia, const Vec3f& angular) {
+  return inverseInertia * angular;
+}
+[[nodiscard]] inline float angularLength(const Vec3f& a) { return length(a); }
+[[nodiscard]] inline double preciseDot(const Vec3f& a, const Vec3f& b) {
+  return static_cast<double>(a.x) * b.x + static_cast<double>(a.y) * b.y + static_cast<double>(a.z) * b.z;
+}
+[[nodiscard]] inline double preciseAngularDot(const Vec3f& a, const Vec3f& b) { return preciseDot(a, b); }
 
 /// The Jacobian of one row: B moves along +linear, A along -linear.
 template <class Vec, class Angular> struct Row {

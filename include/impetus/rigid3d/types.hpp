@@ -60,11 +60,12 @@ struct BodyDef {
   std::uint64_t userData = 0;
 };
 
-/// A shape's material and mass. Friction and restitution act once contacts land.
+/// A shape's material and mass. A contact's friction is the geometric mean of its shapes' (a
+/// slippery shape is slippery against anything), its restitution the larger of the two.
 struct ShapeDef {
   float density = 1000.0f;  ///< kg/m^3 (water's by default): the body's mass comes from its shapes'
   float friction = 0.6f;    ///< Coulomb coefficient
-  float restitution = 0.0f; ///< 0 to 1
+  float restitution = 0.0f; ///< 0 to 1: the ratio of separation to approach speed in an impact
   std::uint64_t userData = 0;
 };
 
@@ -72,6 +73,17 @@ struct WorldDef {
   Vec3f gravity{0.0f, -10.0f, 0.0f}; ///< m/s^2
   int substeps = 4;                  ///< solver substeps per step
   float maxLinearSpeed = 400.0f;     ///< m/s
+  /// Contact stiffness, Hz, capped at a quarter of the substep rate (a stiffer spring than the
+  /// substep can follow would ring); twice this against static and kinematic bodies, which give
+  /// nothing back.
+  float contactHertz = 30.0f;
+  /// Contact damping ratio: heavily overdamped, so an overlap is taken back without a bounce.
+  float contactDampingRatio = 10.0f;
+  float maxContactPushSpeed = 3.0f;  ///< m/s: the fastest an overlap is pushed apart
+  float restitutionThreshold = 1.0f; ///< m/s: slower impacts do not bounce
+  /// Start each step's contact solve from the last step's impulses (warm starting): a resting
+  /// stack holds in a few iterations rather than sinking while they build up.
+  bool enableWarmStarting = true;
 };
 
 } // namespace impetus::rigid3d

@@ -1,25 +1,38 @@
 // The 3D world (ch. 11-12): rigid bodies with quaternion orientation and full inertia tensors,
-// stepped in substeps as the 2D world is. So far it moves bodies under gravity, forces, torques
-// and impulses, with their mass from their shapes; collision, contacts and joints come next
-// (docs/rigid3d.md says what is there).
+// stepped in substeps as the 2D world is. Bodies move under gravity, forces, torques and
+// impulses, with their mass from their shapes, and collide: soft contacts with friction and
+// restitution. Joints come next (docs/rigid3d.md says what is there).
 //
-// Each step, `substeps` times: integrate velocities (gravity, forces and torques; the gyroscopic
-// torque -w x (I w) implicitly, by one Newton step of Euler's equations in the body frame, so a
-// body spun about its intermediate axis flips over and back with its energy bounded; damping,
-// implicitly), hold the speeds within the world's caps, integrate positions (the orientation as
-// q += h/2 (0, w) q, normalised). Everything runs in a fixed order: the same inputs give
-// bit-identical results.
+// Each step: find the pairs of shapes whose boxes overlap and their manifolds; then `substeps`
+// times: integrate velocities (gravity, forces and torques; the gyroscopic torque -w x (I w)
+// implicitly, by the implicit midpoint rule on Euler's equations in the body frame, so a body
+// spun about its intermediate axis flips over and back with its energy bounded; damping,
+// implicitly), warm start and solve the contacts (soft: overlap pushed apart at a bounded speed),
+// hold the speeds within the world's caps, integrate positions (the orientation as
+// q += h/2 (0, w) q, normalised), relax the contacts (friction); then restitution. Everything
+// runs in a fixed order: the same inputs give bit-identical results.
 #pragma once
 
 #include <impetus/math/transform3.hpp>
 #include <impetus/rigid3d/geometry.hpp>
+#include <impetus/rigid3d/manifold.hpp>
 #include <impetus/rigid3d/types.hpp>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
 
 namespace impetus::rigid3d {
+
+/// A touching pair of shapes after a step: its manifold (the normal from A to B) and the
+/// impulses the solver's last substep held at its points.
+struct ContactData {
+  ShapeId shapeA, shapeB;
+  Manifold manifold;
+  std::array<float, 4> normalImpulses{};  ///< N s, a substep's, by point
+  std::array<Vec3f, 4> tangentImpulses{}; ///< N s, world, a substep's friction, by point
+};
 
 class World {
 public:
@@ -95,6 +108,10 @@ public:
   void applyLinearImpulse(BodyId id, const Vec3f& impulse, const Vec3f& worldPoint);
   /// An angular impulse (N m s, world).
   void applyAngularImpulse(BodyId id, const Vec3f& impulse);
+
+  /// The contacts whose manifolds have points (touching, or about to), in a fixed order.
+  void contacts(std::vector<ContactData>& out) const;
+  [[nodiscard]] std::uint32_t contactCount() const noexcept;
 
   [[nodiscard]] Vec3f gravity() const noexcept;
   void setGravity(const Vec3f& gravity);

@@ -1,0 +1,205 @@
+// The 3D world's collision stage: the pairs of shapes whose boxes overlap (the broadphase), kept
+// as contacts in the order of their keys with the impulses their points carry, and each pair's
+// manifold (the narrowphase's table by shape kind).
+#include "rigid3d/world_impl.hpp"
+
+#include <impetus/rigid3d/constants.hpp>
+#include <impetus/rigid3d/manifold.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <variant>
+
+namespace impetus::rigid3d::detail {
+
+namespace {
+
+/// A shape's box in the world, grown by the speculative distance (a pair closer than that has
+/// speculative points) and a margin of its own.
+struct ShapeBox {
+  Vec3f lower, upper;
+  std::uint32_t shape = 0; ///< slot
+};
+
+/// How much a shape's box is grown beyond its speculative reach, m: two boxes that only the
+/// margin makes overlap give a contact with no points, which costs a manifold's test; without
+/// it a pair would begin and end each step as its gap crossed the speculative distance.
+constexpr float boxMargin = linearSlop;
+
+ShapeBox shapeBox(const Shape& shape, const Transform3f& xf, std::uint32_t slot) {
+  Vec3f lower{3.4e38f, 3.4e38f, 3.4e38f};
+  Vec3f upper = -lower;
+  float radius = 0.0f;
+  const auto add = [&](const Vec3f& local) {
+    const Vec3f p = transformPoint(xf, local);
+    lower = min(lower, p);
+    upper = max(upper, p);
+  };
+  std::visit(
+      [&](const auto& g) {
+        using G = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<G, Sphere>) {
+          add(g.center);
+          radius = g.radius;
+        } else if constexpr (std::is_same_v<G, Capsule>) {
+          add(g.center1);
+          add(g.center2);
+          radius = g.radius;
+        } else {
+          for (const Vec3f& p : g.points) {
+            add(p);
+          }
+        }
+      },
+      shape.geometry);
+  const float grow = radius + speculativeDistance + boxMargin;
+  const Vec3f g{grow, grow, grow};
+  return {lower - g, upper + g, slot};
+}
+
+bool overlaps(const ShapeBox& a, const ShapeBox& b) {
+  return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y && b.lower.y <= a.upper.y &&
+         a.lower.z <= b.upper.z && b.lower.z <= a.upper.z;
+}
+
+/// Whether two shapes' bodies can touch: different bodies, at least one of them dynamic.
+bool mayCollide(const Body& a, const Body& b) {
+  return &a != &b && (a.type == BodyType::dynamicBody || b.type == BodyType::dynamicBody);
+}
+
+/// The narrowphase's order of shape kinds: a pair's A is the shape whose kind comes later
+/// (hull, capsule, sphere), so one function serves each pair of kinds.
+bool comesFirst(const Shape& a, const Shape& b) {
+  return a.geometry.index() != b.geometry.index() ? a.geometry.index() > b.geometry.index() : a.id.index < b.id.index;
+}
+
+Manifold collide(const Shape& a, const Transform3f& xfA, const Shape& b, const Transform3f& xfB) {
+  return std::visit(
+      [&](const auto& ga, const auto& gb) -> Manifold {
+        using A = std::decay_t<decltype(ga)>;
+        using B = std::decay_t<decltype(gb)>;
+        if constexpr (std::is_same_v<A, Hull> && std::is_same_v<B, Hull>) {
+          return Manifold{}; // HULLPAIR: collideHulls lands with the hull manifold
+        } else if constexpr (std::is_same_v<A, Hull> && std::is_same_v<B, Capsule>) {
+          return collideHullAndCapsule(ga, xfA, gb, xfB);
+        } else if constexpr (std::is_same_v<A, Hull> && std::is_same_v<B, Sphere>) {
+          return collideHullAndSphere(ga, xfA, gb, xfB);
+        } else if constexpr (std::is_same_v<A, Capsule> && std::is_same_v<B, Capsule>) {
+          return collideCapsules(ga, xfA, gb, xfB);
+        } else if constexpr (std::is_same_v<A, Capsule> && std::is_same_v<B, Sphere>) {
+          return collideCapsuleAndSphere(ga, xfA, gb, xfB);
+        } else if constexpr (std::is_same_v<A, Sphere> && std::is_same_v<B, Sphere>) {
+          return collideSpheres(ga, xfA, gb, xfB);
+        } else {
+          return Manifold{}; // never: A's kind comes after B's (comesFirst)
+        }
+      },
+      a.geometry, b.geometry);
+}
+
+/// The tangents of a manifold: the last step's first tangent made perpendicular to the new
+/// normal where it still can be (so the friction impulses carried along them keep their
+/// meaning), else one perpendicular to the normal, from the axis it leans on least.
+void updateTangents(Contact& c, bool carried) {
+  const Vec3f n = c.manifold.normal;
+  Vec3f t = carried ? c.tangent1 - n * dot(n, c.tangent1) : Vec3f{};
+  // Under this length the old tangent is (nearly) along the new normal: it says nothing.
+  constexpr float minCarriedTangentLength = 0.5f;
+  if (const float len = length(t); len > minCarriedTangentLength) {
+    t = t * (1.0f / len);
+  } else {
+    const Vec3f a = std::abs(n.x) < 0.57735f ? Vec3f{1.0f, 0.0f, 0.0f} : Vec3f{0.0f, 1.0f, 0.0f};
+    t = normalize(cross(a, n));
+  }
+  c.tangent1 = t;
+  c.tangent2 = cross(n, t);
+}
+
+/// The new manifold's points take the impulses of the old points of the same feature ids.
+void carryImpulses(Contact& c, const Manifold& old, const std::array<PointImpulse, 4>& oldImpulses) {
+  for (int k = 0; k < c.manifold.pointCount; ++k) {
+    PointImpulse carried;
+    for (int j = 0; j < old.pointCount; ++j) {
+      if (old.points[static_cast<std::size_t>(j)].id == c.manifold.points[static_cast<std::size_t>(k)].id) {
+        carried = oldImpulses[static_cast<std::size_t>(j)];
+        break;
+      }
+    }
+    c.impulses[static_cast<std::size_t>(k)] = carried;
+  }
+}
+
+/// The pairs of shapes whose boxes overlap, by sweeping the boxes in the order of their lower x:
+/// sorted by key (A's, then B's), as the contacts are kept.
+void findPairs(const WorldState& w, std::vector<ShapeBox>& boxes, std::vector<Contact>& pairs) {
+  boxes.clear();
+  for (std::uint32_t slot = 0; slot < w.shapes.size(); ++slot) {
+    const Shape& s = w.shapes[slot];
+    if (s.alive) {
+      boxes.push_back(shapeBox(s, w.bodies[s.body].transform, slot));
+    }
+  }
+  std::sort(boxes.begin(), boxes.end(), [](const ShapeBox& a, const ShapeBox& b) {
+    return a.lower.x != b.lower.x ? a.lower.x < b.lower.x : a.shape < b.shape;
+  });
+  pairs.clear();
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::size_t j = i + 1; j < boxes.size() && boxes[j].lower.x <= boxes[i].upper.x; ++j) {
+      if (!overlaps(boxes[i], boxes[j])) {
+        continue;
+      }
+      const Shape* a = &w.shapes[boxes[i].shape];
+      const Shape* b = &w.shapes[boxes[j].shape];
+      if (!mayCollide(w.bodies[a->body], w.bodies[b->body])) {
+        continue;
+      }
+      if (!comesFirst(*a, *b)) {
+        std::swap(a, b);
+      }
+      Contact c;
+      c.shapeA = a->id.index;
+      c.shapeB = b->id.index;
+      c.keyA = shapeKey(a->id.index, a->id.generation);
+      c.keyB = shapeKey(b->id.index, b->id.generation);
+      c.bodyA = a->body;
+      c.bodyB = b->body;
+      pairs.push_back(c);
+    }
+  }
+  std::sort(pairs.begin(), pairs.end(),
+            [](const Contact& a, const Contact& b) { return a.keyA != b.keyA ? a.keyA < b.keyA : a.keyB < b.keyB; });
+}
+
+} // namespace
+
+void updateContacts(WorldState& w) {
+  std::vector<ShapeBox> boxes;
+  findPairs(w, boxes, w.nextContacts);
+  // The old contacts and the new pairs are both in key order: one merge finds the pairs that
+  // carry on.
+  std::size_t old = 0;
+  for (Contact& c : w.nextContacts) {
+    while (old < w.contacts.size() &&
+           (w.contacts[old].keyA < c.keyA || (w.contacts[old].keyA == c.keyA && w.contacts[old].keyB < c.keyB))) {
+      ++old;
+    }
+    const bool carried = old < w.contacts.size() && w.contacts[old].keyA == c.keyA && w.contacts[old].keyB == c.keyB;
+    const Shape& a = w.shapes[c.shapeA];
+    const Shape& b = w.shapes[c.shapeB];
+    c.friction = std::sqrt(a.friction * b.friction);
+    c.restitution = std::max(a.restitution, b.restitution);
+    c.manifold = collide(a, w.bodies[c.bodyA].transform, b, w.bodies[c.bodyB].transform);
+    if (carried) {
+      const Contact& before = w.contacts[old];
+      c.tangent1 = before.tangent1;
+      carryImpulses(c, before.manifold, before.impulses);
+    }
+    if (c.manifold.pointCount > 0) {
+      updateTangents(c, carried && w.contacts[old].manifold.pointCount > 0);
+    }
+  }
+  std::swap(w.contacts, w.nextContacts);
+}
+
+} // namespace impetus::rigid3d::detail

@@ -1,0 +1,269 @@
+// The 3D world's contact solver: soft contacts (a normal row and two friction rows per point),
+// warm started from the last step's impulses, solved with bias and relaxed each substep, then
+// restitution. The rows are the shared solver's (solver/constraint_row.hpp) on 3D vectors.
+#include "rigid3d/world_impl.hpp"
+#include "solver/constraint_row.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impetus::rigid3d::detail {
+
+namespace {
+
+/// How many passes the restitution makes over a manifold's bouncing points. One pass, point
+/// after point, is not enough: the first point's impulse turns the body and the next ones then
+/// leave it spinning (a box landing flat on four corners). Repeated, the passes converge to the
+/// impulses that give every point its bounce together (projected Gauss-Seidel on the impact's
+/// linear complementarity problem), and the flat box rebounds without spin (restitution tests).
+constexpr int restitutionPasses = 16;
+
+/// The inverse masses and world inverse inertias of a constraint's bodies, as the shared rows
+/// read them.
+struct PairMass {
+  float mA, mB;
+  Mat33f iA, iB;
+};
+
+PairMass pairMass(const ContactConstraint& c) { return {c.mA, c.mB, c.iA, c.iB}; }
+
+/// The world's speed caps as the rows' impulse bound reads them.
+struct SpeedCaps {
+  float maxSpeed;
+  float maxSpin;
+};
+
+using Row3 = solver::Row<Vec3f, Vec3f>;
+
+Row3 rowAlong(const ConstraintPoint& p, const Vec3f& direction) {
+  return {direction, cross(p.rA, direction), cross(p.rB, direction)};
+}
+
+/// The velocity of B's point relative to A's, m/s.
+Vec3f relativeVelocity(const BodyState& a, const BodyState& b, const ConstraintPoint& p) {
+  return (b.v + cross(b.w, p.rB)) - (a.v + cross(a.w, p.rA));
+}
+
+/// An impulse (N s, world) at a point: +impulse on B, -impulse on A.
+void applyImpulse(BodyState& a, BodyState& b, const ContactConstraint& c, const ConstraintPoint& p,
+                  const Vec3f& impulse) {
+  a.v -= impulse * c.mA;
+  a.w -= c.iA * cross(p.rA, impulse);
+  b.v += impulse * c.mB;
+  b.w += c.iB * cross(p.rB, impulse);
+}
+
+/// A constraint's bodies' new velocities into their states (the static state is never written).
+void writeBack(std::vector<BodyState>& states, std::uint32_t staticIndex, const ContactConstraint& c,
+               const BodyState& a, const BodyState& b) {
+  if (c.indexA != staticIndex) {
+    states[c.indexA].v = a.v;
+    states[c.indexA].w = a.w;
+  }
+  if (c.indexB != staticIndex) {
+    states[c.indexB].v = b.v;
+    states[c.indexB].w = b.w;
+  }
+}
+
+ContactConstraint makeConstraint(const WorldState& w, const Contact& contact, std::uint32_t index,
+                                 const StepContext& context) {
+  const Body& a = w.bodies[contact.bodyA];
+  const Body& b = w.bodies[contact.bodyB];
+  const std::uint32_t staticIndex = w.staticIndex();
+  ContactConstraint c;
+  c.indexA = a.moving() ? a.solverIndex : staticIndex;
+  c.indexB = b.moving() ? b.solverIndex : staticIndex;
+  c.contact = index;
+  c.mA = a.inverseMass;
+  c.mB = b.inverseMass;
+  // The inverse inertias at the step's start: the bodies turn little in a step, and the rows'
+  // masses are made from them once.
+  c.iA = a.inverseMass > 0.0f ? worldInverseInertia(a.transform.q, a.inertia, a.inverseInertia, a.locks) : Mat33f{};
+  c.iB = b.inverseMass > 0.0f ? worldInverseInertia(b.transform.q, b.inertia, b.inverseInertia, b.locks) : Mat33f{};
+  const Manifold& m = contact.manifold;
+  c.normal = m.normal;
+  c.tangent1 = contact.tangent1;
+  c.tangent2 = contact.tangent2;
+  c.friction = contact.friction;
+  c.restitution = contact.restitution;
+  c.stiffer = c.mA == 0.0f || c.mB == 0.0f;
+  c.pointCount = m.pointCount;
+  const PairMass mass = pairMass(c);
+  const SpeedCaps caps{context.maxLinearSpeed, context.maxAngularSpeed};
+  const BodyState& stateA = w.states[c.indexA];
+  const BodyState& stateB = w.states[c.indexB];
+  const Vec3f offsetA = a.center - a.transform.p;
+  const Vec3f offsetB = b.center - b.transform.p;
+  for (int k = 0; k < m.pointCount; ++k) {
+    const ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
+    ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+    p.rA = mp.anchorA - offsetA;
+    p.rB = mp.anchorB - offsetB;
+    p.adjustedSeparation = mp.separation - dot(p.rB - p.rA, m.normal);
+    p.impulse = w.def.enableWarmStarting ? contact.impulses[static_cast<std::size_t>(k)] : PointImpulse{};
+    const Row3 normalRow = rowAlong(p, m.normal);
+    p.normalMass = solver::rowMass(normalRow, mass);
+    p.normalBound = solver::maxRowImpulse(normalRow, p.normalMass, caps);
+    p.tangentMass1 = solver::rowMass(rowAlong(p, c.tangent1), mass);
+    p.tangentMass2 = solver::rowMass(rowAlong(p, c.tangent2), mass);
+    p.approachSpeed = dot(relativeVelocity(stateA, stateB, p), m.normal);
+    p.maxNormalImpulse = 0.0f;
+  }
+  return c;
+}
+
+/// Coulomb friction at a point: the two tangent rows solved together and their accumulated
+/// impulse held within the disc of radius mu times the normal impulse (a round cone, so a body
+/// slides along the fall line whatever the tangents' directions).
+void solveFriction(BodyState& a, BodyState& b, ContactConstraint& c, ConstraintPoint& p) {
+  const Vec3f dv = relativeVelocity(a, b, p);
+  const float old1 = p.impulse.tangent1;
+  const float old2 = p.impulse.tangent2;
+  float new1 = old1 - p.tangentMass1 * dot(dv, c.tangent1);
+  float new2 = old2 - p.tangentMass2 * dot(dv, c.tangent2);
+  const float limit = c.friction * p.impulse.normal;
+  if (const float squared = new1 * new1 + new2 * new2; squared > limit * limit) {
+    const float scale = limit / std::sqrt(squared);
+    new1 *= scale;
+    new2 *= scale;
+  }
+  p.impulse.tangent1 = new1;
+  p.impulse.tangent2 = new2;
+  applyImpulse(a, b, c, p, c.tangent1 * (new1 - old1) + c.tangent2 * (new2 - old2));
+}
+
+void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_t staticIndex,
+              const StepContext& context, bool useBias) {
+  BodyState a = states[c.indexA];
+  BodyState b = states[c.indexB];
+  const solver::Softness& soft = c.stiffer ? context.staticContactSoftness : context.contactSoftness;
+  const Vec3f dp = b.dp - a.dp;
+  for (int k = 0; k < c.pointCount; ++k) {
+    ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+    // The separation now, from the bodies' moves so far this step: the anchors turn with them.
+    const float s = dot(dp + rotate(b.dq, p.rB) - rotate(a.dq, p.rA), c.normal) + p.adjustedSeparation;
+    float bias = 0.0f;
+    float massScale = 1.0f;
+    float impulseScale = 0.0f;
+    if (s > 0.0f) {
+      bias = s * context.inverseH; // speculative: the gap may close this substep, no more
+    } else if (useBias) {
+      bias = std::max(soft.biasRate * s, -context.maxContactPushSpeed);
+      massScale = soft.massScale;
+      impulseScale = soft.impulseScale;
+    }
+    const float vn = dot(relativeVelocity(a, b, p), c.normal);
+    const float impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.impulse.normal;
+    const float total = std::min(std::max(p.impulse.normal + impulse, 0.0f), p.normalBound);
+    const float applied = total - p.impulse.normal;
+    p.impulse.normal = total;
+    p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
+    applyImpulse(a, b, c, p, c.normal * applied);
+  }
+  // Friction in the relax pass only: it acts on the velocities the step keeps.
+  if (!useBias) {
+    for (int k = 0; k < c.pointCount; ++k) {
+      solveFriction(a, b, c, c.points[static_cast<std::size_t>(k)]);
+    }
+  }
+  writeBack(states, staticIndex, c, a, b);
+}
+
+/// A bouncing point as the bodies are at the step's end: one world point, midway between where
+/// the two bodies' anchors have moved, with each body's arm to it, and the normal mass for those
+/// arms. Impulses at one point, equal and opposite, keep the angular momentum about any origin;
+/// at the step's start anchors, left behind by bodies that moved apart sideways in the step,
+/// they would not (a glancing hit would gain or lose a third of its angular momentum).
+ConstraintPoint bounceAnchors(const ContactConstraint& c, const ConstraintPoint& p, const BodyState& a,
+                              const BodyState& b) {
+  // Relative to A's centre at the step's start; B's centre was at rA - rB from it.
+  const Vec3f onA = a.dp + rotate(a.dq, p.rA);
+  const Vec3f bCenter = (p.rA - p.rB) + b.dp;
+  const Vec3f onB = bCenter + rotate(b.dq, p.rB);
+  const Vec3f point = (onA + onB) * 0.5f;
+  ConstraintPoint q = p;
+  q.rA = point - a.dp;
+  q.rB = point - bCenter;
+  q.normalMass = solver::rowMass(rowAlong(q, c.normal), pairMass(c));
+  return q;
+}
+
+} // namespace
+
+void prepareContacts(WorldState& w, const StepContext& context) {
+  w.constraints.clear();
+  for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+    const Contact& contact = w.contacts[i];
+    if (contact.manifold.pointCount > 0) {
+      w.constraints.push_back(makeConstraint(w, contact, static_cast<std::uint32_t>(i), context));
+    }
+  }
+}
+
+void warmStartContacts(WorldState& w) {
+  const std::uint32_t staticIndex = w.staticIndex();
+  for (const ContactConstraint& c : w.constraints) {
+    BodyState a = w.states[c.indexA];
+    BodyState b = w.states[c.indexB];
+    for (int k = 0; k < c.pointCount; ++k) {
+      const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+      applyImpulse(a, b, c, p,
+                   c.normal * p.impulse.normal + c.tangent1 * p.impulse.tangent1 + c.tangent2 * p.impulse.tangent2);
+    }
+    writeBack(w.states, staticIndex, c, a, b);
+  }
+}
+
+void solveContacts(WorldState& w, const StepContext& context, bool useBias) {
+  const std::uint32_t staticIndex = w.staticIndex();
+  for (ContactConstraint& c : w.constraints) {
+    solveOne(c, w.states, staticIndex, context, useBias);
+  }
+}
+
+void applyRestitution(WorldState& w) {
+  const std::uint32_t staticIndex = w.staticIndex();
+  const float threshold = w.def.restitutionThreshold;
+  for (const ContactConstraint& c : w.constraints) {
+    if (c.restitution == 0.0f) {
+      continue;
+    }
+    // The points that approached faster than the threshold and pushed this step bounce.
+    std::array<ConstraintPoint, 4> bouncing{};
+    int count = 0;
+    BodyState a = w.states[c.indexA];
+    BodyState b = w.states[c.indexB];
+    for (int k = 0; k < c.pointCount; ++k) {
+      const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+      if (p.approachSpeed < -threshold && p.maxNormalImpulse > 0.0f) {
+        bouncing[static_cast<std::size_t>(count++)] = bounceAnchors(c, p, a, b);
+      }
+    }
+    // Their normal velocity is driven to e times their approach by impulses that only push,
+    // accumulated apart from the contact's (which warm start the next step's rest).
+    std::array<float, 4> total{};
+    for (int pass = 0; pass < restitutionPasses; ++pass) {
+      for (int k = 0; k < count; ++k) {
+        const ConstraintPoint& p = bouncing[static_cast<std::size_t>(k)];
+        const float vn = dot(relativeVelocity(a, b, p), c.normal);
+        float& sum = total[static_cast<std::size_t>(k)];
+        const float next = std::max(sum - p.normalMass * (vn + c.restitution * p.approachSpeed), 0.0f);
+        applyImpulse(a, b, c, p, c.normal * (next - sum));
+        sum = next;
+      }
+    }
+    writeBack(w.states, staticIndex, c, a, b);
+  }
+}
+
+void storeImpulses(WorldState& w) {
+  for (const ContactConstraint& c : w.constraints) {
+    Contact& contact = w.contacts[c.contact];
+    for (int k = 0; k < c.pointCount; ++k) {
+      contact.impulses[static_cast<std::size_t>(k)] = c.points[static_cast<std::size_t>(k)].impulse;
+    }
+  }
+}
+
+} // namespace impetus::rigid3d::detail
