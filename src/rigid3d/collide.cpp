@@ -80,7 +80,7 @@ Manifold collide(const Shape& a, const Transform3f& xfA, const Shape& b, const T
         using A = std::decay_t<decltype(ga)>;
         using B = std::decay_t<decltype(gb)>;
         if constexpr (std::is_same_v<A, Hull> && std::is_same_v<B, Hull>) {
-          return Manifold{}; // HULLPAIR: collideHulls lands with the hull manifold
+          return collideHulls(ga, xfA, gb, xfB);
         } else if constexpr (std::is_same_v<A, Hull> && std::is_same_v<B, Capsule>) {
           return collideHullAndCapsule(ga, xfA, gb, xfB);
         } else if constexpr (std::is_same_v<A, Hull> && std::is_same_v<B, Sphere>) {

@@ -4,6 +4,8 @@
 #include "rigid3d/world_impl.hpp"
 #include "solver/constraint_row.hpp"
 
+#include <impetus/rigid3d/constants.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,6 +19,17 @@ namespace {
 /// impulses that give every point its bounce together (projected Gauss-Seidel on the impact's
 /// linear complementarity problem), and the flat box rebounds without spin (restitution tests).
 constexpr int restitutionPasses = 16;
+
+/// The most passes the relax makes over the normal rows of a manifold of several points. One
+/// pass, point after point, leaves an impact's impulse on the first points it meets (a box
+/// landing flat is stopped at one corner first, and turns): repeated, the passes share it out as
+/// the points' rows together ask (projected Gauss-Seidel on the manifold's block), and the box
+/// lands level. Four bring a flat landing's spin under 1e-5 rad/s; two leave 1e-4.
+constexpr int maxRelaxNormalPasses = 4;
+
+/// A relax pass that moved no point's normal impulse by more than this fraction of the
+/// manifold's total has converged (a resting contact's passes: one), dimensionless.
+constexpr float relaxConvergence = 0.01f;
 
 /// The inverse masses and world inverse inertias of a constraint's bodies, as the shared rows
 /// read them.
@@ -51,6 +64,12 @@ void applyImpulse(BodyState& a, BodyState& b, const ContactConstraint& c, const 
   a.w -= c.iA * cross(p.rA, impulse);
   b.v += impulse * c.mB;
   b.w += c.iB * cross(p.rB, impulse);
+}
+
+/// A point's separation now, m, from the bodies' moves so far this step: the anchors turn with
+/// them.
+float currentSeparation(const ContactConstraint& c, const ConstraintPoint& p, const BodyState& a, const BodyState& b) {
+  return dot(b.dp - a.dp + rotate(b.dq, p.rB) - rotate(a.dq, p.rA), c.normal) + p.adjustedSeparation;
 }
 
 /// A constraint's bodies' new velocities into their states (the static state is never written).
@@ -138,28 +157,42 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
   BodyState a = states[c.indexA];
   BodyState b = states[c.indexB];
   const solver::Softness& soft = c.stiffer ? context.staticContactSoftness : context.contactSoftness;
-  const Vec3f dp = b.dp - a.dp;
+  std::array<float, 4> separation{};
   for (int k = 0; k < c.pointCount; ++k) {
-    ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-    // The separation now, from the bodies' moves so far this step: the anchors turn with them.
-    const float s = dot(dp + rotate(b.dq, p.rB) - rotate(a.dq, p.rA), c.normal) + p.adjustedSeparation;
-    float bias = 0.0f;
-    float massScale = 1.0f;
-    float impulseScale = 0.0f;
-    if (s > 0.0f) {
-      bias = s * context.inverseH; // speculative: the gap may close this substep, no more
-    } else if (useBias) {
-      bias = std::max(soft.biasRate * s, -context.maxContactPushSpeed);
-      massScale = soft.massScale;
-      impulseScale = soft.impulseScale;
+    separation[static_cast<std::size_t>(k)] = currentSeparation(c, c.points[static_cast<std::size_t>(k)], a, b);
+  }
+  // One pass over the points, then, in the relax pass of a manifold of several points, more
+  // while the last one still moved impulse between them.
+  const int passes = useBias || c.pointCount == 1 ? 1 : maxRelaxNormalPasses;
+  for (int pass = 0; pass < passes; ++pass) {
+    float largest = 0.0f;
+    float sum = 0.0f;
+    for (int k = 0; k < c.pointCount; ++k) {
+      ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+      const float s = separation[static_cast<std::size_t>(k)];
+      float bias = 0.0f;
+      float massScale = 1.0f;
+      float impulseScale = 0.0f;
+      if (s > 0.0f) {
+        bias = s * context.inverseH; // speculative: the gap may close this substep, no more
+      } else if (useBias) {
+        bias = std::max(soft.biasRate * s, -context.maxContactPushSpeed);
+        massScale = soft.massScale;
+        impulseScale = soft.impulseScale;
+      }
+      const float vn = dot(relativeVelocity(a, b, p), c.normal);
+      const float impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.impulse.normal;
+      const float total = std::min(std::max(p.impulse.normal + impulse, 0.0f), p.normalBound);
+      const float applied = total - p.impulse.normal;
+      p.impulse.normal = total;
+      p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
+      applyImpulse(a, b, c, p, c.normal * applied);
+      largest = std::max(largest, std::abs(applied));
+      sum += total;
     }
-    const float vn = dot(relativeVelocity(a, b, p), c.normal);
-    const float impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.impulse.normal;
-    const float total = std::min(std::max(p.impulse.normal + impulse, 0.0f), p.normalBound);
-    const float applied = total - p.impulse.normal;
-    p.impulse.normal = total;
-    p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
-    applyImpulse(a, b, c, p, c.normal * applied);
+    if (largest <= relaxConvergence * sum) {
+      break;
+    }
   }
   // Friction in the relax pass only: it acts on the velocities the step keeps.
   if (!useBias) {
@@ -229,14 +262,17 @@ void applyRestitution(WorldState& w) {
     if (c.restitution == 0.0f) {
       continue;
     }
-    // The points that approached faster than the threshold and pushed this step bounce.
+    // The points that approached faster than the threshold and met the other body this step
+    // bounce: those that pushed, and those touching at the step's end (a box landing flat on
+    // speculative points may be stopped by two of its corners; all four land).
     std::array<ConstraintPoint, 4> bouncing{};
     int count = 0;
     BodyState a = w.states[c.indexA];
     BodyState b = w.states[c.indexB];
     for (int k = 0; k < c.pointCount; ++k) {
       const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-      if (p.approachSpeed < -threshold && p.maxNormalImpulse > 0.0f) {
+      const bool met = p.maxNormalImpulse > 0.0f || currentSeparation(c, p, a, b) <= linearSlop;
+      if (p.approachSpeed < -threshold && met) {
         bouncing[static_cast<std::size_t>(count++)] = bounceAnchors(c, p, a, b);
       }
     }

@@ -3,6 +3,8 @@
 #include <impetus/rigid3d/constants.hpp>
 #include <impetus/rigid3d/manifold.hpp>
 
+#include "rigid3d/segment_closest.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -68,29 +70,6 @@ Vec3f closestOnSegment(const Vec3f& p, const Vec3f& q, const Vec3f& x) {
   const float dd = dot(d, d);
   const float t = dd > 0.0f ? std::clamp(dot(x - p, d) / dd, 0.0f, 1.0f) : 0.0f;
   return p + d * t;
-}
-
-/// The closest points of segments [p1, q1] and [p2, q2] (Ericson, Real-Time Collision Detection
-/// 5.1.9), as the fractions s and t along them.
-void closestBetweenSegments(const Vec3f& p1, const Vec3f& q1, const Vec3f& p2, const Vec3f& q2, float& s, float& t) {
-  const Vec3f d1 = q1 - p1;
-  const Vec3f d2 = q2 - p2;
-  const Vec3f r = p1 - p2;
-  const float a = dot(d1, d1);
-  const float e = dot(d2, d2);
-  const float f = dot(d2, r);
-  const float c = dot(d1, r);
-  const float b = dot(d1, d2);
-  const float denominator = a * e - b * b; // >= 0; 0 when parallel
-  s = denominator > 0.0f ? std::clamp((b * f - c * e) / denominator, 0.0f, 1.0f) : 0.0f;
-  t = (b * s + f) / e;
-  if (t < 0.0f) {
-    t = 0.0f;
-    s = std::clamp(-c / a, 0.0f, 1.0f);
-  } else if (t > 1.0f) {
-    t = 1.0f;
-    s = std::clamp((b - c) / a, 0.0f, 1.0f);
-  }
 }
 
 } // namespace
