@@ -176,28 +176,48 @@ void findPairs(const WorldState& w, std::vector<ShapeBox>& boxes, std::vector<Co
 void updateContacts(WorldState& w) {
   std::vector<ShapeBox> boxes;
   findPairs(w, boxes, w.nextContacts);
-  // The old contacts and the new pairs are both in key order: one merge finds the pairs that
-  // carry on.
-  std::size_t old = 0;
-  for (Contact& c : w.nextContacts) {
-    while (old < w.contacts.size() &&
-           (w.contacts[old].keyA < c.keyA || (w.contacts[old].keyA == c.keyA && w.contacts[old].keyB < c.keyB))) {
-      ++old;
+  ContactEvents& events = w.contactEvents;
+  events.begins.clear();
+  events.ends.clear();
+  events.hits.clear();
+  const auto endTouching = [&](const Contact& c) {
+    if (c.manifold.pointCount > 0) {
+      events.ends.push_back({w.shapeIdOf(c.keyA), w.shapeIdOf(c.keyB)});
     }
-    const bool carried = old < w.contacts.size() && w.contacts[old].keyA == c.keyA && w.contacts[old].keyB == c.keyB;
+  };
+  // The old contacts and the new pairs are both in key order: one merge finds the pairs that
+  // carry on, and the old ones that went (their boxes apart, or a shape destroyed).
+  std::size_t old = 0;
+  const auto before = [](const Contact& a, const Contact& b) {
+    return a.keyA != b.keyA ? a.keyA < b.keyA : a.keyB < b.keyB;
+  };
+  for (Contact& c : w.nextContacts) {
+    while (old < w.contacts.size() && before(w.contacts[old], c)) {
+      endTouching(w.contacts[old++]);
+    }
+    const bool carried = old < w.contacts.size() && !before(c, w.contacts[old]);
     const Shape& a = w.shapes[c.shapeA];
     const Shape& b = w.shapes[c.shapeB];
     c.friction = std::sqrt(a.friction * b.friction);
     c.restitution = std::max(a.restitution, b.restitution);
     c.manifold = collide(a, w.bodies[c.bodyA].transform, b, w.bodies[c.bodyB].transform);
+    const bool wasTouching = carried && w.contacts[old].manifold.pointCount > 0;
     if (carried) {
-      const Contact& before = w.contacts[old];
-      c.tangent1 = before.tangent1;
-      carryImpulses(c, before.manifold, before.impulses);
+      const Contact& previous = w.contacts[old++];
+      c.tangent1 = previous.tangent1;
+      carryImpulses(c, previous.manifold, previous.impulses);
     }
     if (c.manifold.pointCount > 0) {
-      updateTangents(c, carried && w.contacts[old].manifold.pointCount > 0);
+      updateTangents(c, wasTouching);
+      if (!wasTouching) {
+        events.begins.push_back({a.id, b.id});
+      }
+    } else if (wasTouching) {
+      events.ends.push_back({a.id, b.id});
     }
+  }
+  while (old < w.contacts.size()) {
+    endTouching(w.contacts[old++]);
   }
   std::swap(w.contacts, w.nextContacts);
 }

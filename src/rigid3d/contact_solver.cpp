@@ -31,6 +31,10 @@ constexpr int maxRelaxNormalPasses = 4;
 /// manifold's total has converged (a resting contact's passes: one), dimensionless.
 constexpr float relaxConvergence = 0.01f;
 
+/// The slowest approach that raises a hit event whatever the threshold, m/s: a resting contact
+/// approaches at rounding speeds, and a threshold of 0 should not make every one a hit.
+constexpr float minHitSpeed = 1.0e-3f;
+
 /// The inverse masses and world inverse inertias of a constraint's bodies, as the shared rows
 /// read them.
 struct PairMass {
@@ -296,8 +300,20 @@ void applyRestitution(WorldState& w) {
 void storeImpulses(WorldState& w) {
   for (const ContactConstraint& c : w.constraints) {
     Contact& contact = w.contacts[c.contact];
+    int fastest = -1;
+    float approach = std::max(w.def.hitEventThreshold, minHitSpeed);
     for (int k = 0; k < c.pointCount; ++k) {
-      contact.impulses[static_cast<std::size_t>(k)] = c.points[static_cast<std::size_t>(k)].impulse;
+      const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
+      contact.impulses[static_cast<std::size_t>(k)] = p.impulse;
+      if (p.maxNormalImpulse > 0.0f && -p.approachSpeed >= approach) {
+        approach = -p.approachSpeed;
+        fastest = k;
+      }
+    }
+    if (fastest >= 0) {
+      const ManifoldPoint& mp = contact.manifold.points[static_cast<std::size_t>(fastest)];
+      w.contactEvents.hits.push_back(
+          {w.shapeIdOf(contact.keyA), w.shapeIdOf(contact.keyB), mp.point, contact.manifold.normal, approach});
     }
   }
 }

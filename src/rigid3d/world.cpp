@@ -24,6 +24,7 @@ const WorldDef& requireValidWorldDef(const WorldDef& def) {
   requireNonNegative(def.contactDampingRatio, "contactDampingRatio");
   requirePositive(def.maxContactPushSpeed, "maxContactPushSpeed");
   requireNonNegative(def.restitutionThreshold, "restitutionThreshold");
+  requireNonNegative(def.hitEventThreshold, "hitEventThreshold");
   return def;
 }
 
@@ -76,6 +77,8 @@ void World::shiftOrigin(const Vec3f& newOrigin) {
     }
   }
 }
+
+const ContactEvents& World::contactEvents() const noexcept { return impl_->contactEvents; }
 
 void World::contacts(std::vector<ContactData>& out) const {
   out.clear();

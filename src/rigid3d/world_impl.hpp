@@ -113,9 +113,14 @@ struct WorldState {
   std::vector<ContactConstraint> constraints;
   /// Scratch of the pair update, kept to spare allocations.
   std::vector<Contact> nextContacts;
+  ContactEvents contactEvents; ///< the last step's
 
   explicit WorldState(const WorldDef& d);
   [[nodiscard]] std::uint32_t staticIndex() const noexcept { return static_cast<std::uint32_t>(awakeBodies.size()); }
+  /// The id of the shape a contact's key part names (stale once the shape is destroyed).
+  [[nodiscard]] ShapeId shapeIdOf(std::uint64_t key) const noexcept {
+    return {static_cast<std::uint32_t>(key >> 32U), static_cast<std::uint32_t>(key), shapeIds.world()};
+  }
   Body& body(BodyId id);
   [[nodiscard]] const Body& body(BodyId id) const;
   Shape& shape(ShapeId id);
@@ -211,7 +216,8 @@ void solveContacts(WorldState& w, const StepContext& context, bool useBias);
 /// Newton's law of restitution for the points that were approaching faster than the threshold
 /// and pushed: their normal velocity becomes e times the approach.
 void applyRestitution(WorldState& w);
-/// The impulses back into the contacts, for the next step's warm start.
+/// The impulses back into the contacts, for the next step's warm start; a hit event for each
+/// contact whose fastest point that pushed approached at least at the hit threshold.
 void storeImpulses(WorldState& w);
 /// A substep of torque-free rotation (Euler's equations I dw/dt = -w x (I w) in the body frame)
 /// by the implicit midpoint rule, which keeps both of the torque-free body's quadratic

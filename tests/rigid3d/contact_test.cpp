@@ -184,5 +184,53 @@ TEST(Rigid3dContact, restitution_above_one_is_refused) {
   EXPECT_EQ(thrownField([&] { World w(bad); }), "maxContactPushSpeed");
 }
 
+TEST(Rigid3dContact, a_landing_ball_raises_a_begin_and_a_hit_and_leaving_an_end) {
+  World world;
+  const BodyId ground = addGround(world);
+  const float h = 1.8f;
+  const BodyId ball = addBall(world, {0.0f, h + 0.5f, 0.0f}, 0.5f);
+  std::vector<ShapeId> groundShapes, ballShapes;
+  world.bodyShapes(ground, groundShapes);
+  world.bodyShapes(ball, ballShapes);
+  int begins = 0;
+  int hits = 0;
+  for (int i = 0; i < 60; ++i) {
+    world.step(dt);
+    const ContactEvents& events = world.contactEvents();
+    for (const ContactBeginEvent& e : events.begins) {
+      // The hull comes first in a pair (the narrowphase's order): the ground is A.
+      EXPECT_EQ(e.shapeA, groundShapes[0]);
+      EXPECT_EQ(e.shapeB, ballShapes[0]);
+      ++begins;
+    }
+    for (const ContactHitEvent& e : events.hits) {
+      ++hits;
+      // It met the ground at sqrt(2 g h) = 6 m/s, give or take the speed gained in the step
+      // it touched in (g dt = 0.17 m/s).
+      EXPECT_NEAR(e.approachSpeed, std::sqrt(2.0f * 10.0f * h), 10.0f * dt);
+      EXPECT_NEAR(e.normal.y, 1.0f, 1e-6f);
+      EXPECT_NEAR(e.point.y, 0.0f, 0.1f);
+    }
+    EXPECT_TRUE(events.ends.empty());
+  }
+  EXPECT_EQ(begins, 1);
+  EXPECT_EQ(hits, 1);
+  // Lifted away: the contact ends; destroyed while touching: it ends too, naming the shape.
+  world.setTransform(ball, {0.0f, 3.0f, 0.0f}, Quatf::identity());
+  world.step(dt);
+  ASSERT_EQ(world.contactEvents().ends.size(), 1U);
+  EXPECT_EQ(world.contactEvents().ends[0].shapeB, ballShapes[0]);
+  const BodyId other = addBall(world, {0.0f, 0.5f, 0.0f}, 0.5f);
+  world.step(dt);
+  ASSERT_EQ(world.contactEvents().begins.size(), 1U);
+  std::vector<ShapeId> otherShapes;
+  world.bodyShapes(other, otherShapes);
+  world.destroyBody(other);
+  world.step(dt);
+  ASSERT_EQ(world.contactEvents().ends.size(), 1U);
+  EXPECT_EQ(world.contactEvents().ends[0].shapeB, otherShapes[0]);
+  EXPECT_FALSE(world.isValid(world.contactEvents().ends[0].shapeB));
+}
+
 } // namespace
 } // namespace impetus::rigid3d

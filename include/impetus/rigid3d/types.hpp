@@ -84,6 +84,8 @@ struct WorldDef {
   /// Start each step's contact solve from the last step's impulses (warm starting): a resting
   /// stack holds in a few iterations rather than sinking while they build up.
   bool enableWarmStarting = true;
+  /// m/s: impacts at least this fast raise a hit event (World::contactEvents).
+  float hitEventThreshold = 1.0f;
 };
 
 } // namespace impetus::rigid3d

@@ -34,6 +34,27 @@ struct ContactData {
   std::array<Vec3f, 4> tangentImpulses{}; ///< N s, world, a substep's friction, by point
 };
 
+/// Two shapes started touching (their manifold gained points) this step.
+struct ContactBeginEvent {
+  ShapeId shapeA, shapeB;
+};
+/// Two shapes stopped touching this step (or one was destroyed: its id is then stale).
+struct ContactEndEvent {
+  ShapeId shapeA, shapeB;
+};
+/// Two shapes met at least as fast as WorldDef::hitEventThreshold: for impact sounds and damage.
+struct ContactHitEvent {
+  ShapeId shapeA, shapeB;
+  Vec3f point;                ///< world, m: the point that approached fastest
+  Vec3f normal;               ///< from A to B
+  float approachSpeed = 0.0f; ///< m/s, > 0
+};
+struct ContactEvents {
+  std::vector<ContactBeginEvent> begins;
+  std::vector<ContactEndEvent> ends;
+  std::vector<ContactHitEvent> hits;
+};
+
 class World {
 public:
   explicit World(const WorldDef& def = {});
@@ -109,6 +130,9 @@ public:
   /// An angular impulse (N m s, world).
   void applyAngularImpulse(BodyId id, const Vec3f& impulse);
 
+  /// The contact events of the last step, in a fixed order (the contacts' keys: A's shape, then
+  /// B's), valid until the next step.
+  [[nodiscard]] const ContactEvents& contactEvents() const noexcept;
   /// The contacts whose manifolds have points (touching, or about to), in a fixed order.
   void contacts(std::vector<ContactData>& out) const;
   [[nodiscard]] std::uint32_t contactCount() const noexcept;
