@@ -63,6 +63,18 @@ bool overlaps(const ShapeBox& a, const ShapeBox& b) {
          a.lower.z <= b.upper.z && b.lower.z <= a.upper.z;
 }
 
+/// How far a shape's surface lies out from its core, m: a sphere's or capsule's radius (a hull
+/// is its own core). It is also the radius the shape rolls on.
+float roundingRadius(const Shape& s) {
+  if (const auto* sphere = std::get_if<Sphere>(&s.geometry)) {
+    return sphere->radius;
+  }
+  if (const auto* capsule = std::get_if<Capsule>(&s.geometry)) {
+    return capsule->radius;
+  }
+  return 0.0f;
+}
+
 /// Whether two shapes' bodies can touch: different bodies, at least one of them dynamic.
 bool mayCollide(const Body& a, const Body& b) {
   return &a != &b && (a.type == BodyType::dynamicBody || b.type == BodyType::dynamicBody);
@@ -200,11 +212,16 @@ void updateContacts(WorldState& w) {
     const Shape& b = w.shapes[c.shapeB];
     c.friction = std::sqrt(a.friction * b.friction);
     c.restitution = std::max(a.restitution, b.restitution);
+    c.rollingResistance =
+        std::max(a.rollingResistance, b.rollingResistance) * std::max(roundingRadius(a), roundingRadius(b));
+    c.roundingA = roundingRadius(a);
+    c.roundingB = roundingRadius(b);
     c.manifold = collide(a, w.bodies[c.bodyA].transform, b, w.bodies[c.bodyB].transform);
     const bool wasTouching = carried && w.contacts[old].manifold.pointCount > 0;
     if (carried) {
       const Contact& previous = w.contacts[old++];
       c.tangent1 = previous.tangent1;
+      c.rollingImpulse = previous.rollingImpulse;
       carryImpulses(c, previous.manifold, previous.impulses);
     }
     if (c.manifold.pointCount > 0) {

@@ -30,7 +30,15 @@ struct Contact {
   std::uint32_t shapeA = 0, shapeB = 0; ///< shape slots
   std::uint32_t bodyA = 0, bodyB = 0;   ///< body slots
   float friction = 0.0f;                ///< the geometric mean of the shapes'
-  float restitution = 0.0f;             ///< the larger of the shapes'
+  /// How far A's and B's surfaces lie out from their cores, m: a sphere's or capsule's radius
+  /// (0 for a hull).
+  float roundingA = 0.0f, roundingB = 0.0f;
+  float restitution = 0.0f; ///< the larger of the shapes'
+  /// The torque against rolling per newton of normal force, m: the larger coefficient of the
+  /// two shapes times the larger rolling radius (a sphere's or capsule's; a hull rolls on none).
+  float rollingResistance = 0.0f;
+  /// The rolling resistance's angular impulse of the last substep, world, N m s (warm start).
+  Vec3f rollingImpulse;
   Manifold manifold;
   std::array<PointImpulse, 4> impulses{}; ///< by manifold point
   /// The manifold's tangents (world, unit; t2 = n x t1): kept while the normal turns little, so
@@ -41,8 +49,12 @@ struct Contact {
 /// One contact point in the solver.
 struct ConstraintPoint {
   Vec3f rA, rB; ///< anchors relative to the centres of mass, world axes, m
-  /// The separation at the step's start less what the anchors' offsets contribute, m: the
-  /// current separation is dot(dB + qB rB - dA - qA rA, n) plus this.
+  /// The anchors moved in to the shapes' cores (by a sphere's or capsule's radius along the
+  /// normal), m: what turns with a body. A ball's contact stays under its centre however it
+  /// rolls; its surface point, turned with it, would rise off the ground.
+  Vec3f coreA, coreB;
+  /// The separation at the step's start less what the cores' offsets contribute, m: the current
+  /// separation is dot(dB + qB coreB - dA - qA coreA, n) plus this.
   float adjustedSeparation = 0.0f;
   PointImpulse impulse;
   float normalMass = 0.0f;   ///< kg
@@ -62,6 +74,11 @@ struct ContactConstraint {
   Vec3f normal, tangent1, tangent2;
   float friction = 0.0f;
   float restitution = 0.0f;
+  float rollingResistance = 0.0f; ///< m (Contact::rollingResistance)
+  /// The rolling rows (the relative spin about tangent1 and tangent2): their accumulated angular
+  /// impulses, N m s, and the inverse of their 2x2 effective mass matrix [t_i . (IA + IB) t_j].
+  float rollingImpulse1 = 0.0f, rollingImpulse2 = 0.0f;
+  float rollingInverse11 = 0.0f, rollingInverse12 = 0.0f, rollingInverse22 = 0.0f;
   bool stiffer = false; ///< against a static or kinematic body: the stiffer softness
   int pointCount = 0;
   std::array<ConstraintPoint, 4> points{};

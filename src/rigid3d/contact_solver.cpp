@@ -73,7 +73,7 @@ void applyImpulse(BodyState& a, BodyState& b, const ContactConstraint& c, const 
 /// A point's separation now, m, from the bodies' moves so far this step: the anchors turn with
 /// them.
 float currentSeparation(const ContactConstraint& c, const ConstraintPoint& p, const BodyState& a, const BodyState& b) {
-  return dot(b.dp - a.dp + rotate(b.dq, p.rB) - rotate(a.dq, p.rA), c.normal) + p.adjustedSeparation;
+  return dot(b.dp - a.dp + rotate(b.dq, p.coreB) - rotate(a.dq, p.coreA), c.normal) + p.adjustedSeparation;
 }
 
 /// A constraint's bodies' new velocities into their states (the static state is never written).
@@ -111,6 +111,22 @@ ContactConstraint makeConstraint(const WorldState& w, const Contact& contact, st
   c.friction = contact.friction;
   c.restitution = contact.restitution;
   c.stiffer = c.mA == 0.0f || c.mB == 0.0f;
+  c.rollingResistance = contact.rollingResistance;
+  if (c.rollingResistance > 0.0f) {
+    const Mat33f k = c.iA + c.iB;
+    const float k11 = dot(c.tangent1, k * c.tangent1);
+    const float k12 = dot(c.tangent1, k * c.tangent2);
+    const float k22 = dot(c.tangent2, k * c.tangent2);
+    if (const float det = k11 * k22 - k12 * k12; det > 0.0f) {
+      c.rollingInverse11 = k22 / det;
+      c.rollingInverse12 = -k12 / det;
+      c.rollingInverse22 = k11 / det;
+    }
+    if (w.def.enableWarmStarting) {
+      c.rollingImpulse1 = dot(contact.rollingImpulse, c.tangent1);
+      c.rollingImpulse2 = dot(contact.rollingImpulse, c.tangent2);
+    }
+  }
   c.pointCount = m.pointCount;
   const PairMass mass = pairMass(c);
   const SpeedCaps caps{context.maxLinearSpeed, context.maxAngularSpeed};
@@ -123,7 +139,9 @@ ContactConstraint makeConstraint(const WorldState& w, const Contact& contact, st
     ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
     p.rA = mp.anchorA - offsetA;
     p.rB = mp.anchorB - offsetB;
-    p.adjustedSeparation = mp.separation - dot(p.rB - p.rA, m.normal);
+    p.coreA = p.rA - m.normal * contact.roundingA;
+    p.coreB = p.rB + m.normal * contact.roundingB;
+    p.adjustedSeparation = mp.separation - dot(p.coreB - p.coreA, m.normal);
     p.impulse = w.def.enableWarmStarting ? contact.impulses[static_cast<std::size_t>(k)] : PointImpulse{};
     const Row3 normalRow = rowAlong(p, m.normal);
     p.normalMass = solver::rowMass(normalRow, mass);
@@ -134,6 +152,36 @@ ContactConstraint makeConstraint(const WorldState& w, const Contact& contact, st
     p.maxNormalImpulse = 0.0f;
   }
   return c;
+}
+
+/// Rolling resistance: an angular impulse against the relative spin about the tangents (the
+/// rolling), held within the disc of c_rr r times the manifold's normal impulse.
+void solveRolling(BodyState& a, BodyState& b, ContactConstraint& c) {
+  if (c.rollingResistance == 0.0f) {
+    return;
+  }
+  float normal = 0.0f;
+  for (int k = 0; k < c.pointCount; ++k) {
+    normal += c.points[static_cast<std::size_t>(k)].impulse.normal;
+  }
+  const Vec3f spin = b.w - a.w;
+  const float s1 = dot(spin, c.tangent1);
+  const float s2 = dot(spin, c.tangent2);
+  const float old1 = c.rollingImpulse1;
+  const float old2 = c.rollingImpulse2;
+  float new1 = old1 - (c.rollingInverse11 * s1 + c.rollingInverse12 * s2);
+  float new2 = old2 - (c.rollingInverse12 * s1 + c.rollingInverse22 * s2);
+  const float limit = c.rollingResistance * normal;
+  if (const float squared = new1 * new1 + new2 * new2; squared > limit * limit) {
+    const float scale = limit / std::sqrt(squared);
+    new1 *= scale;
+    new2 *= scale;
+  }
+  c.rollingImpulse1 = new1;
+  c.rollingImpulse2 = new2;
+  const Vec3f applied = c.tangent1 * (new1 - old1) + c.tangent2 * (new2 - old2);
+  a.w -= c.iA * applied;
+  b.w += c.iB * applied;
 }
 
 /// Coulomb friction at a point: the two tangent rows solved together and their accumulated
@@ -200,6 +248,7 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
   }
   // Friction in the relax pass only: it acts on the velocities the step keeps.
   if (!useBias) {
+    solveRolling(a, b, c);
     for (int k = 0; k < c.pointCount; ++k) {
       solveFriction(a, b, c, c.points[static_cast<std::size_t>(k)]);
     }
@@ -215,9 +264,9 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
 ConstraintPoint bounceAnchors(const ContactConstraint& c, const ConstraintPoint& p, const BodyState& a,
                               const BodyState& b) {
   // Relative to A's centre at the step's start; B's centre was at rA - rB from it.
-  const Vec3f onA = a.dp + rotate(a.dq, p.rA);
+  const Vec3f onA = a.dp + rotate(a.dq, p.coreA) + (p.rA - p.coreA);
   const Vec3f bCenter = (p.rA - p.rB) + b.dp;
-  const Vec3f onB = bCenter + rotate(b.dq, p.rB);
+  const Vec3f onB = bCenter + rotate(b.dq, p.coreB) + (p.rB - p.coreB);
   const Vec3f point = (onA + onB) * 0.5f;
   ConstraintPoint q = p;
   q.rA = point - a.dp;
@@ -247,6 +296,11 @@ void warmStartContacts(WorldState& w) {
       const ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
       applyImpulse(a, b, c, p,
                    c.normal * p.impulse.normal + c.tangent1 * p.impulse.tangent1 + c.tangent2 * p.impulse.tangent2);
+    }
+    if (c.rollingResistance > 0.0f) {
+      const Vec3f rolling = c.tangent1 * c.rollingImpulse1 + c.tangent2 * c.rollingImpulse2;
+      a.w -= c.iA * rolling;
+      b.w += c.iB * rolling;
     }
     writeBack(w.states, staticIndex, c, a, b);
   }
@@ -300,6 +354,7 @@ void applyRestitution(WorldState& w) {
 void storeImpulses(WorldState& w) {
   for (const ContactConstraint& c : w.constraints) {
     Contact& contact = w.contacts[c.contact];
+    contact.rollingImpulse = c.tangent1 * c.rollingImpulse1 + c.tangent2 * c.rollingImpulse2;
     int fastest = -1;
     float approach = std::max(w.def.hitEventThreshold, minHitSpeed);
     for (int k = 0; k < c.pointCount; ++k) {

@@ -54,6 +54,7 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const ShapeGeometry
   s.density = static_cast<float>(requireNonNegative(def.density, "density"));
   s.friction = static_cast<float>(requireNonNegative(def.friction, "friction"));
   s.restitution = static_cast<float>(requireNonNegative(def.restitution, "restitution"));
+  s.rollingResistance = static_cast<float>(requireNonNegative(def.rollingResistance, "rollingResistance"));
   if (s.restitution > 1.0f) {
     throwInvalid("restitution", s.restitution, "must be at most 1 (a bounce gains no energy)");
   }

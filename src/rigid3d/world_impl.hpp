@@ -25,6 +25,7 @@ struct Shape {
   float density = 0.0f;
   float friction = 0.0f;
   float restitution = 0.0f;
+  float rollingResistance = 0.0f;
   std::uint64_t userData = 0;
   ShapeId id;
   bool alive = false;

@@ -232,5 +232,37 @@ TEST(Rigid3dContact, a_landing_ball_raises_a_begin_and_a_hit_and_leaving_an_end)
   EXPECT_FALSE(world.isValid(world.contactEvents().ends[0].shapeB));
 }
 
+TEST(Rigid3dContact, rolling_resistance_slows_a_rolling_ball_at_five_sevenths_c_g) {
+  // The torque c N r against the rolling: (m + I/r^2) a = -c m g, a = -(5/7) c g, whatever the
+  // radius, the direction it rolls in, or the ground's tangents. Without it the ball rolls on.
+  for (const float c : {0.0f, 0.05f}) {
+    for (const Vec3f direction : {Vec3f{1.0f, 0.0f, 0.0f}, normalize(Vec3f{-1.0f, 0.0f, 2.0f})}) {
+      World world;
+      addGround(world);
+      const float radius = 0.4f;
+      BodyDef def;
+      def.type = BodyType::dynamicBody;
+      def.position = {0.0f, radius, 0.0f};
+      def.linearVelocity = direction * 3.0f;
+      def.angularVelocity = cross(Vec3f{0.0f, 1.0f, 0.0f}, direction) * (3.0f / radius);
+      const BodyId ball = world.createBody(def);
+      ShapeDef shape;
+      shape.rollingResistance = c;
+      world.createShape(ball, shape, Sphere{{}, radius});
+      for (int i = 0; i < 10; ++i) {
+        world.step(dt);
+      }
+      const float v0 = dot(world.linearVelocity(ball), direction);
+      for (int i = 0; i < 120; ++i) {
+        world.step(dt);
+      }
+      const float v1 = dot(world.linearVelocity(ball), direction);
+      const float expected = 5.0f / 7.0f * c * 10.0f * 2.0f;
+      EXPECT_NEAR(v0 - v1, expected, 0.02f * expected + 1e-4f) << "c " << c;
+      EXPECT_NEAR(length(world.angularVelocity(ball)) * radius, v1, 1e-3f) << "c " << c; // still rolling
+    }
+  }
+}
+
 } // namespace
 } // namespace impetus::rigid3d

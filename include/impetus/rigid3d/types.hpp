@@ -66,6 +66,11 @@ struct ShapeDef {
   float density = 1000.0f;  ///< kg/m^3 (water's by default): the body's mass comes from its shapes'
   float friction = 0.6f;    ///< Coulomb coefficient
   float restitution = 0.0f; ///< 0 to 1: the ratio of separation to approach speed in an impact
+  /// Rolling resistance coefficient (dimensionless, as c_rr in F = c_rr N): a sphere or capsule
+  /// rolling on this shape feels a torque c_rr N r against its rolling (r its radius), so a
+  /// rolling ball slows at (5/7) c_rr g. Typical: 0.001 (steel on steel) to 0.3 (tyre on sand).
+  /// The pair uses the larger of the two.
+  float rollingResistance = 0.0f;
   std::uint64_t userData = 0;
 };
 
