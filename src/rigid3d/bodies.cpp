@@ -87,6 +87,7 @@ BodyId World::createBody(const BodyDef& def) {
   b.gravityScale = static_cast<float>(requireFinite(def.gravityScale, "gravityScale"));
   b.locks = def.locks;
   b.allowFastRotation = def.allowFastRotation;
+  b.isBullet = def.isBullet;
   b.userData = def.userData;
   const MassData mass = def.massData.value_or(MassData{});
   if (def.type == BodyType::dynamicBody) {

@@ -180,6 +180,7 @@ void solve(WorldState& w, float dt) {
   }
   applyRestitution(w);
   storeImpulses(w);
+  sweepFastBodies(w);
   finalizeBodies(w);
 }
 

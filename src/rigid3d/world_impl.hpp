@@ -47,6 +47,7 @@ struct Body {
   float linearDamping = 0.0f, angularDamping = 0.0f, gravityScale = 1.0f;
   AxisLocks locks;
   bool allowFastRotation = false;
+  bool isBullet = false;
   std::uint32_t solverIndex = 0;     ///< this step's index into the solver arrays (moving bodies)
   std::vector<std::uint32_t> shapes; ///< shape slots, in creation order
   std::uint64_t userData = 0;
@@ -205,6 +206,12 @@ void solve(WorldState& w, float dt);
 /// as contacts (kept with their impulses where the pair was already touching), and each
 /// contact's manifold at the bodies' present poses.
 void updateContacts(WorldState& w);
+
+// continuous.cpp
+/// Sweeps the bodies that moved more than half their thinnest extent this step (and bullets)
+/// from their start to their end poses against the static shapes (bullets: and the dynamic
+/// bodies' end poses), and stops each at its first time of impact.
+void sweepFastBodies(WorldState& w);
 
 // contact_solver.cpp
 /// The constraints from the contacts with points, at the step's start: anchors, effective

@@ -52,6 +52,11 @@ struct BodyDef {
   /// Lets the body spin faster than a quarter turn a substep (a wheel, a rotor); otherwise its
   /// spin is capped there, where the rotation deltas stop meaning what they say.
   bool allowFastRotation = false;
+  /// Swept against the dynamic bodies too, not only the static ones (a projectile): a body
+  /// moving more than half its thinnest extent in a step is always swept against the static
+  /// shapes, so it cannot pass through a wall; a bullet cannot pass through a thin moving body
+  /// either. It costs a sweep each step.
+  bool isBullet = false;
   /// A dynamic body's mass properties. Absent: its shapes' (World::createShape), or while it has
   /// none with mass, 1 kg at the body origin with a unit inertia tensor (1 kg m^2 about every
   /// axis). Setting them (here or World::setMassData) holds them until a shape is added or
