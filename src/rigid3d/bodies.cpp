@@ -203,6 +203,7 @@ void World::setMassData(BodyId id, const MassData& data) {
   detail::Body& b = impl_->body(id);
   detail::requireValidMassData(data);
   detail::applyMassData(b, data);
+  detail::updateExtents(*impl_, b);
 }
 
 void World::setLinearDamping(BodyId id, float damping) {

@@ -120,50 +120,42 @@ float timeOfImpact(const ShapeGeometry& moving, const Sweep& sweep, const Placed
   return t;
 }
 
-/// The farthest any point of a body's shapes lies from its centre of mass, m, and the least
-/// half-thickness of any of them (a sphere's or capsule's radius; a hull's least distance from
-/// its centroid to a face), m.
-struct Extents {
-  float reach = 0.0f;
-  float thinnest = 0.0f;
-};
-
-Extents bodyExtents(const WorldState& w, const Body& b) {
-  Extents e{0.0f, 3.4e38f};
-  for (const std::uint32_t slot : b.shapes) {
-    std::visit(
-        [&](const auto& g) {
-          using G = std::decay_t<decltype(g)>;
-          if constexpr (std::is_same_v<G, Sphere>) {
-            e.reach = std::max(e.reach, length(g.center - b.localCenter) + g.radius);
-            e.thinnest = std::min(e.thinnest, g.radius);
-          } else if constexpr (std::is_same_v<G, Capsule>) {
-            e.reach = std::max(e.reach, std::max(length(g.center1 - b.localCenter), length(g.center2 - b.localCenter)) +
-                                            g.radius);
-            e.thinnest = std::min(e.thinnest, g.radius);
-          } else {
-            Vec3f centroid;
-            for (const Vec3f& p : g.points) {
-              e.reach = std::max(e.reach, length(p - b.localCenter));
-              centroid += p;
-            }
-            centroid = centroid * (1.0f / static_cast<float>(g.points.size()));
-            for (const HullPlane& plane : g.planes) {
-              e.thinnest = std::min(e.thinnest, plane.offset - dot(plane.normal, centroid));
-            }
-          }
-        },
-        w.shapes[slot].geometry);
-  }
-  return e;
-}
-
 bool boxesOverlap(const Vec3f& lowerA, const Vec3f& upperA, const Vec3f& lowerB, const Vec3f& upperB) {
   return lowerA.x <= upperB.x && lowerB.x <= upperA.x && lowerA.y <= upperB.y && lowerB.y <= upperA.y &&
          lowerA.z <= upperB.z && lowerB.z <= upperA.z;
 }
 
 } // namespace
+
+void updateExtents(const WorldState& w, Body& b) {
+  b.reach = 0.0f;
+  b.thinnest = b.shapes.empty() ? 0.0f : 3.4e38f;
+  for (const std::uint32_t slot : b.shapes) {
+    std::visit(
+        [&](const auto& g) {
+          using G = std::decay_t<decltype(g)>;
+          if constexpr (std::is_same_v<G, Sphere>) {
+            b.reach = std::max(b.reach, length(g.center - b.localCenter) + g.radius);
+            b.thinnest = std::min(b.thinnest, g.radius);
+          } else if constexpr (std::is_same_v<G, Capsule>) {
+            b.reach = std::max(b.reach, std::max(length(g.center1 - b.localCenter), length(g.center2 - b.localCenter)) +
+                                            g.radius);
+            b.thinnest = std::min(b.thinnest, g.radius);
+          } else {
+            Vec3f centroid;
+            for (const Vec3f& p : g.points) {
+              b.reach = std::max(b.reach, length(p - b.localCenter));
+              centroid += p;
+            }
+            centroid = centroid * (1.0f / static_cast<float>(g.points.size()));
+            for (const HullPlane& plane : g.planes) {
+              b.thinnest = std::min(b.thinnest, plane.offset - dot(plane.normal, centroid));
+            }
+          }
+        },
+        w.shapes[slot].geometry);
+  }
+}
 
 void sweepFastBodies(WorldState& w) {
   PlacedShape scratch;
@@ -174,11 +166,10 @@ void sweepFastBodies(WorldState& w) {
     if (b.type != BodyType::dynamicBody || b.shapes.empty()) {
       continue;
     }
-    const Extents extents = bodyExtents(w, b);
     const float moved = length(s.dp);
     // A body moving less than half its thinnest extent in a step meets anything in its way
     // within the speculative contacts; faster, it could pass a thin wall between two steps.
-    if (!b.isBullet && moved < 0.5f * extents.thinnest) {
+    if (!b.isBullet && moved < 0.5f * b.thinnest) {
       continue;
     }
     Sweep sweep;
@@ -187,8 +178,8 @@ void sweepFastBodies(WorldState& w) {
     sweep.c1 = b.center + s.dp;
     sweep.q0 = b.transform.q;
     sweep.q1 = normalize(s.dq * b.transform.q);
-    sweep.bound = moved + angle(s.dq) * extents.reach;
-    const Vec3f grow{extents.reach, extents.reach, extents.reach};
+    sweep.bound = moved + angle(s.dq) * b.reach;
+    const Vec3f grow{b.reach, b.reach, b.reach};
     const Vec3f lower = min(sweep.c0, sweep.c1) - grow;
     const Vec3f upper = max(sweep.c0, sweep.c1) + grow;
     float first = 1.0f;

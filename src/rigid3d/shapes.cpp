@@ -12,10 +12,10 @@ namespace impetus::rigid3d {
 
 namespace detail {
 
-void updateMassFromShapes(WorldState& w, Body& b) {
-  if (b.type != BodyType::dynamicBody) {
-    return;
-  }
+namespace {
+
+/// A dynamic body's mass properties from its shapes, applied.
+void massFromShapes(const WorldState& w, Body& b) {
   std::vector<MassPart> parts;
   parts.reserve(b.shapes.size());
   for (const std::uint32_t slot : b.shapes) {
@@ -40,6 +40,16 @@ void updateMassFromShapes(WorldState& w, Body& b) {
     }
   }
   applyMassData(b, data);
+}
+
+} // namespace
+
+void updateMassFromShapes(WorldState& w, Body& b) {
+  if (b.type != BodyType::dynamicBody) {
+    return;
+  }
+  massFromShapes(w, b);
+  updateExtents(w, b);
 }
 
 } // namespace detail

@@ -48,6 +48,10 @@ struct Body {
   AxisLocks locks;
   bool allowFastRotation = false;
   bool isBullet = false;
+  /// The farthest any point of the body's shapes lies from its centre of mass, m, and the least
+  /// half-thickness of any of them (a sphere's or capsule's radius; a hull's least distance
+  /// from its centroid to a face), m: what continuous collision reads (updateExtents).
+  float reach = 0.0f, thinnest = 0.0f;
   std::uint32_t solverIndex = 0;     ///< this step's index into the solver arrays (moving bodies)
   std::vector<std::uint32_t> shapes; ///< shape slots, in creation order
   std::uint64_t userData = 0;
@@ -212,6 +216,8 @@ void updateContacts(WorldState& w);
 /// from their start to their end poses against the static shapes (bullets: and the dynamic
 /// bodies' end poses), and stops each at its first time of impact.
 void sweepFastBodies(WorldState& w);
+/// The body's reach and thinnest extent from its shapes and centre of mass.
+void updateExtents(const WorldState& w, Body& b);
 
 // contact_solver.cpp
 /// The constraints from the contacts with points, at the step's start: anchors, effective
