@@ -88,6 +88,8 @@ BodyId World::createBody(const BodyDef& def) {
   b.locks = def.locks;
   b.allowFastRotation = def.allowFastRotation;
   b.isBullet = def.isBullet;
+  b.enableSleep = def.enableSleep;
+  b.awake = def.isAwake || def.type == BodyType::staticBody;
   b.userData = def.userData;
   const MassData mass = def.massData.value_or(MassData{});
   if (def.type == BodyType::dynamicBody) {
@@ -99,8 +101,12 @@ BodyId World::createBody(const BodyDef& def) {
   b.center = b.transform.p;
   detail::applyMassData(b, mass);
   const bool moving = b.type != BodyType::staticBody;
+  const bool awake = b.awake;
   const BodyId id = detail::placeRecord<BodyTag>(w.bodyIds, w.bodies, std::move(b));
-  if (moving) {
+  if (def.type == BodyType::dynamicBody) {
+    w.islands.addBody(id.index);
+  }
+  if (moving && awake) {
     w.awakeBodySet.add(id.index);
   }
   return id;
@@ -108,6 +114,9 @@ BodyId World::createBody(const BodyDef& def) {
 
 void World::destroyBody(BodyId id) {
   detail::Body& b = impl_->body(id);
+  // What rested on it falls.
+  detail::wakeBody(*impl_, id.index);
+  impl_->islands.removeBody(id.index);
   for (const std::uint32_t slot : b.shapes) {
     impl_->shapeIds.freeId(impl_->shapes[slot].id);
     impl_->shapes[slot] = detail::Shape{};
@@ -115,6 +124,19 @@ void World::destroyBody(BodyId id) {
   impl_->awakeBodySet.remove(id.index);
   impl_->bodyIds.freeId(id);
   b = detail::Body{};
+}
+
+bool World::isAwake(BodyId id) const { return impl_->body(id).awake; }
+
+void World::setAwake(BodyId id, bool awake) {
+  detail::WorldState& w = *impl_;
+  detail::Body& b = w.body(id);
+  if (awake) {
+    detail::wakeBody(w, id.index);
+  } else if (b.awake && b.type == BodyType::dynamicBody) {
+    // Its whole island sleeps with it: a body cannot sleep on what is still moving.
+    detail::sleepIsland(w, w.islands.islandOf(id.index));
+  }
 }
 
 bool World::isValid(BodyId id) const noexcept {
@@ -183,12 +205,14 @@ void World::setTransform(BodyId id, const Vec3f& position, const Quatf& rotation
   detail::Body& b = impl_->body(id);
   b.transform = {requireFinite(position, "position"), detail::requireRotation(rotation, "rotation")};
   b.center = transformPoint(b.transform, b.localCenter);
+  detail::wakeBody(*impl_, id.index);
 }
 
 void World::setLinearVelocity(BodyId id, const Vec3f& velocity) {
   detail::Body& b = impl_->body(id);
   if (b.type != BodyType::staticBody) {
     b.linearVelocity = requireFinite(velocity, "velocity");
+    detail::wakeBody(*impl_, id.index);
   }
 }
 
@@ -196,6 +220,7 @@ void World::setAngularVelocity(BodyId id, const Vec3f& velocity) {
   detail::Body& b = impl_->body(id);
   if (b.type != BodyType::staticBody) {
     b.angularVelocity = requireFinite(velocity, "velocity");
+    detail::wakeBody(*impl_, id.index);
   }
 }
 
@@ -204,6 +229,7 @@ void World::setMassData(BodyId id, const MassData& data) {
   detail::requireValidMassData(data);
   detail::applyMassData(b, data);
   detail::updateExtents(*impl_, b);
+  detail::wakeBody(*impl_, id.index);
 }
 
 void World::setLinearDamping(BodyId id, float damping) {
@@ -224,6 +250,7 @@ void World::applyForce(BodyId id, const Vec3f& force, const Vec3f& worldPoint) {
   if (b.type == BodyType::dynamicBody) {
     b.force += force;
     b.torque += cross(worldPoint - b.center, force);
+    detail::wakeBody(*impl_, id.index);
   }
 }
 
@@ -232,6 +259,7 @@ void World::applyForceToCenter(BodyId id, const Vec3f& force) {
   requireFinite(force, "force");
   if (b.type == BodyType::dynamicBody) {
     b.force += force;
+    detail::wakeBody(*impl_, id.index);
   }
 }
 
@@ -240,6 +268,7 @@ void World::applyTorque(BodyId id, const Vec3f& torque) {
   requireFinite(torque, "torque");
   if (b.type == BodyType::dynamicBody) {
     b.torque += torque;
+    detail::wakeBody(*impl_, id.index);
   }
 }
 
@@ -248,6 +277,7 @@ void World::applyLinearImpulse(BodyId id, const Vec3f& impulse, const Vec3f& wor
   requireFinite(impulse, "impulse");
   requireFinite(worldPoint, "worldPoint");
   if (b.type == BodyType::dynamicBody) {
+    detail::wakeBody(*impl_, id.index);
     b.linearVelocity = detail::withoutLockedLinear(b.linearVelocity + impulse * b.inverseMass, b.locks);
     applyAngularImpulse(id, cross(worldPoint - b.center, impulse));
   }
@@ -257,6 +287,7 @@ void World::applyAngularImpulse(BodyId id, const Vec3f& impulse) {
   detail::Body& b = impl_->body(id);
   requireFinite(impulse, "impulse");
   if (b.type == BodyType::dynamicBody) {
+    detail::wakeBody(*impl_, id.index);
     const Mat33f inverseInertia = detail::worldInverseInertia(b.transform.q, b.inertia, b.inverseInertia, b.locks);
     b.angularVelocity = detail::withoutLockedAngular(b.angularVelocity + inverseInertia * impulse, b.locks);
   }

@@ -75,6 +75,25 @@ float roundingRadius(const Shape& s) {
   return 0.0f;
 }
 
+/// Whether a body is in this step's motion: awake and not static.
+bool awakeAndMoving(const Body& b) { return b.awake && b.type != BodyType::staticBody; }
+
+/// A sleeping body touched by one that moves (a dynamic body awake, a kinematic one in motion)
+/// wakes, with its island.
+void wakeTouched(WorldState& w, const Contact& c) {
+  const Body& a = w.bodies[c.bodyA];
+  const Body& b = w.bodies[c.bodyB];
+  const auto disturbs = [](const Body& x) {
+    return awakeAndMoving(x) && (x.type == BodyType::dynamicBody || lengthSquared(x.linearVelocity) > 0.0f ||
+                                 lengthSquared(x.angularVelocity) > 0.0f);
+  };
+  if (!b.awake && disturbs(a)) {
+    wakeBody(w, c.bodyB);
+  } else if (!a.awake && disturbs(b)) {
+    wakeBody(w, c.bodyA);
+  }
+}
+
 /// Whether two shapes' bodies can touch: different bodies, at least one of them dynamic.
 bool mayCollide(const Body& a, const Body& b) {
   return &a != &b && (a.type == BodyType::dynamicBody || b.type == BodyType::dynamicBody);
@@ -195,6 +214,7 @@ void updateContacts(WorldState& w) {
   const auto endTouching = [&](const Contact& c) {
     if (c.manifold.pointCount > 0) {
       events.ends.push_back({w.shapeIdOf(c.keyA), w.shapeIdOf(c.keyB)});
+      linkContact(w, c, false);
     }
   };
   // The old contacts and the new pairs are both in key order: one merge finds the pairs that
@@ -210,6 +230,11 @@ void updateContacts(WorldState& w) {
     const bool carried = old < w.contacts.size() && !before(c, w.contacts[old]);
     const Shape& a = w.shapes[c.shapeA];
     const Shape& b = w.shapes[c.shapeB];
+    if (carried && !awakeAndMoving(w.bodies[c.bodyA]) && !awakeAndMoving(w.bodies[c.bodyB])) {
+      // Asleep (or asleep on a static body): nothing moved, the contact is as it was.
+      c = w.contacts[old++];
+      continue;
+    }
     c.friction = std::sqrt(a.friction * b.friction);
     c.restitution = std::max(a.restitution, b.restitution);
     c.rollingResistance =
@@ -228,9 +253,12 @@ void updateContacts(WorldState& w) {
       updateTangents(c, wasTouching);
       if (!wasTouching) {
         events.begins.push_back({a.id, b.id});
+        linkContact(w, c, true);
       }
+      wakeTouched(w, c);
     } else if (wasTouching) {
       events.ends.push_back({a.id, b.id});
+      linkContact(w, c, false);
     }
   }
   while (old < w.contacts.size()) {

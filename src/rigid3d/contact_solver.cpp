@@ -281,7 +281,12 @@ void prepareContacts(WorldState& w, const StepContext& context) {
   w.constraints.clear();
   for (std::size_t i = 0; i < w.contacts.size(); ++i) {
     const Contact& contact = w.contacts[i];
-    if (contact.manifold.pointCount > 0) {
+    const Body& a = w.bodies[contact.bodyA];
+    const Body& b = w.bodies[contact.bodyB];
+    // Between two bodies out of this step's motion (asleep, or asleep on a static body): not
+    // solved.
+    const bool inMotion = (a.awake && a.moving()) || (b.awake && b.moving());
+    if (contact.manifold.pointCount > 0 && inMotion) {
       w.constraints.push_back(makeConstraint(w, contact, static_cast<std::uint32_t>(i), context));
     }
   }

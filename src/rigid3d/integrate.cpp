@@ -158,8 +158,8 @@ GyroscopicStep gyroscopicStep(const Quatf& rotation, const Mat33f& inertia, cons
 
 void solve(WorldState& w, float dt) {
   const StepContext context = makeStepContext(w, dt);
+  updateContacts(w); // first: a contact that begins may wake bodies into this step
   prepareBodies(w);
-  updateContacts(w);
   prepareContacts(w, context);
   const std::size_t n = w.sims.size();
   for (int substep = 0; substep < context.substeps; ++substep) {
@@ -182,6 +182,7 @@ void solve(WorldState& w, float dt) {
   storeImpulses(w);
   sweepFastBodies(w);
   finalizeBodies(w);
+  updateSleep(w, dt);
 }
 
 } // namespace impetus::rigid3d::detail

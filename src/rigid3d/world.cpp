@@ -25,6 +25,9 @@ const WorldDef& requireValidWorldDef(const WorldDef& def) {
   requirePositive(def.maxContactPushSpeed, "maxContactPushSpeed");
   requireNonNegative(def.restitutionThreshold, "restitutionThreshold");
   requireNonNegative(def.hitEventThreshold, "hitEventThreshold");
+  requireNonNegative(def.timeToSleep, "timeToSleep");
+  requireNonNegative(def.sleepLinearTolerance, "sleepLinearTolerance");
+  requireNonNegative(def.sleepAngularTolerance, "sleepAngularTolerance");
   return def;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "rigid3d/contact.hpp"
+#include "solver/islands.hpp"
 #include "solver/slot_list.hpp"
 #include "solver/softness.hpp"
 
@@ -48,6 +49,9 @@ struct Body {
   AxisLocks locks;
   bool allowFastRotation = false;
   bool isBullet = false;
+  bool enableSleep = true;
+  bool awake = true;      ///< moving bodies: in the awake set (static bodies: always)
+  float sleepTime = 0.0f; ///< s it has been slower than the sleep tolerances
   /// The farthest any point of the body's shapes lies from its centre of mass, m, and the least
   /// half-thickness of any of them (a sphere's or capsule's radius; a hull's least distance
   /// from its centroid to a face), m: what continuous collision reads (updateExtents).
@@ -120,6 +124,9 @@ struct WorldState {
   /// Scratch of the pair update, kept to spare allocations.
   std::vector<Contact> nextContacts;
   ContactEvents contactEvents; ///< the last step's
+  /// The dynamic bodies joined by touching contacts (the sleeping unit).
+  solver::Islands islands;
+  std::vector<std::uint32_t> sleepCandidates; ///< scratch of updateSleep: islands in order
 
   explicit WorldState(const WorldDef& d);
   [[nodiscard]] std::uint32_t staticIndex() const noexcept { return static_cast<std::uint32_t>(awakeBodies.size()); }
@@ -210,6 +217,17 @@ void solve(WorldState& w, float dt);
 /// as contacts (kept with their impulses where the pair was already touching), and each
 /// contact's manifold at the bodies' present poses.
 void updateContacts(WorldState& w);
+
+// sleep.cpp
+/// Wakes a body and its island (everything touching it, transitively).
+void wakeBody(WorldState& w, std::uint32_t slot);
+void wakeIsland(WorldState& w, std::uint32_t island);
+/// Puts an island's bodies to sleep: out of the awake set, at rest.
+void sleepIsland(WorldState& w, std::uint32_t island);
+/// A touching contact between two dynamic bodies began (joins their islands) or ended.
+void linkContact(WorldState& w, const Contact& c, bool began);
+/// The bodies' rest times after a step, and the islands at rest put to sleep.
+void updateSleep(WorldState& w, float dt);
 
 // continuous.cpp
 /// Sweeps the bodies that moved more than half their thinnest extent this step (and bullets)

@@ -57,6 +57,10 @@ struct BodyDef {
   /// shapes, so it cannot pass through a wall; a bullet cannot pass through a thin moving body
   /// either. It costs a sweep each step.
   bool isBullet = false;
+  /// May fall asleep when it and everything touching it have been at rest for timeToSleep.
+  bool enableSleep = true;
+  /// Starts awake (false: asleep, until touched or changed).
+  bool isAwake = true;
   /// A dynamic body's mass properties. Absent: its shapes' (World::createShape), or while it has
   /// none with mass, 1 kg at the body origin with a unit inertia tensor (1 kg m^2 about every
   /// axis). Setting them (here or World::setMassData) holds them until a shape is added or
@@ -96,6 +100,11 @@ struct WorldDef {
   bool enableWarmStarting = true;
   /// m/s: impacts at least this fast raise a hit event (World::contactEvents).
   float hitEventThreshold = 1.0f;
+  /// Islands at rest fall asleep and cost the solver nothing until touched.
+  bool enableSleep = true;
+  float timeToSleep = 0.5f;             ///< s an island must stay slow to fall asleep
+  float sleepLinearTolerance = 0.05f;   ///< m/s
+  float sleepAngularTolerance = 0.035f; ///< rad/s (2 degrees per second)
 };
 
 } // namespace impetus::rigid3d

@@ -85,6 +85,13 @@ public:
   [[nodiscard]] ShapeGeometry shapeGeometry(ShapeId id) const;
   void bodyShapes(BodyId body, std::vector<ShapeId>& out) const;
 
+  /// Whether the body is awake (static bodies: always). Islands at rest fall asleep (WorldDef::
+  /// enableSleep); a contact beginning with an awake body, or any call that changes a body
+  /// (its transform, velocities, mass, forces, impulses), wakes its island.
+  [[nodiscard]] bool isAwake(BodyId id) const;
+  /// Wakes the body's island, or puts it to sleep (the whole island: a body cannot sleep on
+  /// what is still moving).
+  void setAwake(BodyId id, bool awake);
   [[nodiscard]] BodyType bodyType(BodyId id) const;
   /// The body origin's frame in the world.
   [[nodiscard]] Transform3f transform(BodyId id) const;
