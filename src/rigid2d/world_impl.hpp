@@ -419,14 +419,7 @@ struct StepContext {
   }
 }
 
-/// Whether two shapes' filters let them collide: A and B collide when each one's category is in
-/// the other's mask, unless they share a non-zero group (positive: always, negative: never).
-[[nodiscard]] inline bool shouldCollide(const Filter& a, const Filter& b) {
-  if (a.group == b.group && a.group != 0) {
-    return a.group > 0;
-  }
-  return (a.category & b.mask) != 0 && (b.category & a.mask) != 0;
-}
+using impetus::shouldCollide;
 
 /// The shape as GJK sees it (its core points and radius), in the body frame.
 [[nodiscard]] ShapeProxy shapeProxy(const Shape& s);

@@ -182,7 +182,7 @@ void findPairs(const WorldState& w, std::vector<ShapeBox>& boxes, std::vector<Co
       }
       const Shape* a = &w.shapes[boxes[i].shape];
       const Shape* b = &w.shapes[boxes[j].shape];
-      if (!mayCollide(w.bodies[a->body], w.bodies[b->body])) {
+      if (!shouldCollide(a->filter, b->filter) || !mayCollide(w.bodies[a->body], w.bodies[b->body])) {
         continue;
       }
       if (!comesFirst(*a, *b)) {

@@ -3,6 +3,7 @@
 // also against the other dynamic bodies where they end the step), and stopped at its first time
 // of impact, so it cannot pass through a wall thinner than its step (Box2D v3's way: the contact
 // that begins there next step stops it).
+#include "rigid3d/placed_shape.hpp"
 #include "rigid3d/world_impl.hpp"
 
 #include <impetus/rigid3d/constants.hpp>
@@ -38,51 +39,6 @@ struct Sweep {
     return {c - rotate(q, localCenter), q};
   }
 };
-
-/// A shape's core points (a sphere's centre, a capsule's two centres, a hull's vertices) placed
-/// by a transform, and its radius: what GJK reads.
-struct PlacedShape {
-  std::array<Vec3f, maxHullVertices> points{};
-  int count = 0;
-  float radius = 0.0f;
-
-  void place(const ShapeGeometry& geometry, const Transform3f& xf) {
-    count = 0;
-    std::visit(
-        [&](const auto& g) {
-          using G = std::decay_t<decltype(g)>;
-          if constexpr (std::is_same_v<G, Sphere>) {
-            points[0] = transformPoint(xf, g.center);
-            count = 1;
-            radius = g.radius;
-          } else if constexpr (std::is_same_v<G, Capsule>) {
-            points[0] = transformPoint(xf, g.center1);
-            points[1] = transformPoint(xf, g.center2);
-            count = 2;
-            radius = g.radius;
-          } else {
-            // A hull has at most maxHullVertices points when made from a cloud; one made from
-            // faces with more is read up to that many (its GJK distance then a bound from below
-            // of the rest's: the sweep still stops short of the face).
-            count = static_cast<int>(std::min<std::size_t>(g.points.size(), points.size()));
-            for (int i = 0; i < count; ++i) {
-              points[static_cast<std::size_t>(i)] = transformPoint(xf, g.points[static_cast<std::size_t>(i)]);
-            }
-            radius = 0.0f;
-          }
-        },
-        geometry);
-  }
-  [[nodiscard]] DistanceProxy proxy() const {
-    return {std::span<const Vec3f>(points.data(), static_cast<std::size_t>(count)), radius};
-  }
-};
-
-/// The distance between two placed shapes' surfaces, m (0 when their cores overlap).
-float surfaceDistance(const PlacedShape& a, const PlacedShape& b) {
-  const DistanceOutput d = coreDistance(a.proxy(), b.proxy());
-  return d.overlap ? -(a.radius + b.radius) : d.distance - a.radius - b.radius;
-}
 
 /// The first time in [0, 1] at which a shape carried by `sweep` comes within `target` of a
 /// fixed shape (conservative advancement: each step advances by the distance over the sweep's
@@ -192,7 +148,9 @@ void sweepFastBodies(WorldState& w) {
       // bullets) where they end the step.
       const bool target = ob.type == BodyType::staticBody ||
                           (b.isBullet && ob.type == BodyType::dynamicBody && !ob.isBullet && ob.moving());
-      if (!target) {
+      if (!target || !std::any_of(b.shapes.begin(), b.shapes.end(), [&](std::uint32_t slot) {
+            return shouldCollide(w.shapes[slot].filter, other.filter);
+          })) {
         continue;
       }
       const Transform3f xf =
@@ -213,7 +171,9 @@ void sweepFastBodies(WorldState& w) {
         continue;
       }
       for (const std::uint32_t slot : b.shapes) {
-        first = std::min(first, timeOfImpact(w.shapes[slot].geometry, sweep, fixed, linearSlop, scratch));
+        if (shouldCollide(w.shapes[slot].filter, other.filter)) {
+          first = std::min(first, timeOfImpact(w.shapes[slot].geometry, sweep, fixed, linearSlop, scratch));
+        }
       }
     }
     if (first < 1.0f) {

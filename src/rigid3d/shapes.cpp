@@ -68,6 +68,7 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const ShapeGeometry
   if (s.restitution > 1.0f) {
     throwInvalid("restitution", s.restitution, "must be at most 1 (a bounce gains no energy)");
   }
+  s.filter = def.filter;
   s.userData = def.userData;
   const ShapeId id = detail::placeRecord<ShapeTag>(w.shapeIds, w.shapes, std::move(s));
   b.shapes.push_back(id.index);

@@ -27,6 +27,7 @@ struct Shape {
   float friction = 0.0f;
   float restitution = 0.0f;
   float rollingResistance = 0.0f;
+  CollisionFilter filter;
   std::uint64_t userData = 0;
   ShapeId id;
   bool alive = false;

@@ -1,6 +1,7 @@
 // Definitions for the 2D world: ids, body and shape definitions, world settings.
 #pragma once
 
+#include <impetus/core/collision_filter.hpp>
 #include <impetus/core/id_pool.hpp>
 #include <impetus/core/task_runner.hpp>
 #include <impetus/math/vec2.hpp>
@@ -38,13 +39,8 @@ struct BodyDef {
   std::uint64_t userData = 0;
 };
 
-/// Which shapes collide: A and B collide when (A.category & B.mask) and (B.category & A.mask) are
-/// non-zero, unless they share a non-zero group (positive: always collide, negative: never).
-struct Filter {
-  std::uint64_t category = 1;
-  std::uint64_t mask = ~std::uint64_t{0};
-  std::int32_t group = 0;
-};
+/// Which shapes collide (impetus::CollisionFilter, the same rule in every world).
+using Filter = CollisionFilter;
 
 struct ShapeDef {
   float density = 1.0f;     ///< kg/m^2

@@ -2,6 +2,7 @@
 // right-handed with +y up; SI units throughout (m, kg, s, rad).
 #pragma once
 
+#include <impetus/core/collision_filter.hpp>
 #include <impetus/core/id_pool.hpp>
 #include <impetus/math/mat33.hpp>
 #include <impetus/math/quat.hpp>
@@ -80,6 +81,8 @@ struct ShapeDef {
   /// rolling ball slows at (5/7) c_rr g. Typical: 0.001 (steel on steel) to 0.3 (tyre on sand).
   /// The pair uses the larger of the two.
   float rollingResistance = 0.0f;
+  /// Which shapes it collides with (categories, masks, groups), and which queries see it.
+  CollisionFilter filter;
   std::uint64_t userData = 0;
 };
 

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace impetus::rigid3d {
@@ -53,6 +54,14 @@ struct ContactEvents {
   std::vector<ContactBeginEvent> begins;
   std::vector<ContactEndEvent> ends;
   std::vector<ContactHitEvent> hits;
+};
+
+/// Where a ray met a shape.
+struct RayHit {
+  ShapeId shape;
+  Vec3f point;           ///< world, m
+  Vec3f normal;          ///< the surface's outward normal there
+  float fraction = 0.0f; ///< along the translation, 0 to 1
 };
 
 class World {
@@ -136,6 +145,19 @@ public:
   void applyLinearImpulse(BodyId id, const Vec3f& impulse, const Vec3f& worldPoint);
   /// An angular impulse (N m s, world).
   void applyAngularImpulse(BodyId id, const Vec3f& impulse);
+
+  /// The first shape the ray from `origin` along `translation` (world, m) hits, of those whose
+  /// filter passes `filter` (shouldCollide); none when it hits nothing. A ray starting inside a
+  /// shape does not hit that shape (rayCast). Throws impetus::Error for non-finite input.
+  [[nodiscard]] std::optional<RayHit> castRayClosest(const Vec3f& origin, const Vec3f& translation,
+                                                     const CollisionFilter& filter = {}) const;
+  /// Every shape the ray hits, nearest first (ties in shape order).
+  [[nodiscard]] std::vector<RayHit> castRayAll(const Vec3f& origin, const Vec3f& translation,
+                                               const CollisionFilter& filter = {}) const;
+  /// The shapes a shape placed at `transform` overlaps (closer than touching: their surfaces
+  /// cross), in shape order. Throws impetus::Error for invalid geometry or a non-finite position.
+  [[nodiscard]] std::vector<ShapeId> overlapShape(const ShapeGeometry& shape, const Transform3f& transform,
+                                                  const CollisionFilter& filter = {}) const;
 
   /// The contact events of the last step, in a fixed order (the contacts' keys: A's shape, then
   /// B's), valid until the next step.
