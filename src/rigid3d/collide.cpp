@@ -75,6 +75,23 @@ float roundingRadius(const Shape& s) {
   return 0.0f;
 }
 
+/// Whether a manifold's shapes overlap (a point below zero separation), not merely come near.
+bool overlapping(const Manifold& m) {
+  for (int k = 0; k < m.pointCount; ++k) {
+    if (m.points[static_cast<std::size_t>(k)].separation < 0.0f) {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// A sensor pair's event: the sensor shape and the shape it sees.
+SensorEvent sensorEvent(const WorldState& w, const Contact& c) {
+  const ShapeId a = w.shapeIdOf(c.keyA);
+  const ShapeId b = w.shapeIdOf(c.keyB);
+  return c.sensorIsA ? SensorEvent{a, b} : SensorEvent{b, a};
+}
+
 /// Whether a body is in this step's motion: awake and not static.
 bool awakeAndMoving(const Body& b) { return b.awake && b.type != BodyType::staticBody; }
 
@@ -188,7 +205,12 @@ void findPairs(const WorldState& w, std::vector<ShapeBox>& boxes, std::vector<Co
       if (!comesFirst(*a, *b)) {
         std::swap(a, b);
       }
+      if (a->sensor && b->sensor) {
+        continue; // sensors see bodies, not each other
+      }
       Contact c;
+      c.sensor = a->sensor || b->sensor;
+      c.sensorIsA = a->sensor;
       c.shapeA = a->id.index;
       c.shapeB = b->id.index;
       c.keyA = shapeKey(a->id.index, a->id.generation);
@@ -211,8 +233,21 @@ void updateContacts(WorldState& w) {
   events.begins.clear();
   events.ends.clear();
   events.hits.clear();
-  const auto endTouching = [&](const Contact& c) {
-    if (c.manifold.pointCount > 0) {
+  w.sensorEvents.begins.clear();
+  w.sensorEvents.ends.clear();
+  // A pair that began or ended touching (a sensor's: overlapping) this step.
+  const auto began = [&](const Contact& c) {
+    if (c.sensor) {
+      w.sensorEvents.begins.push_back(sensorEvent(w, c));
+    } else {
+      events.begins.push_back({w.shapeIdOf(c.keyA), w.shapeIdOf(c.keyB)});
+      linkContact(w, c, true);
+    }
+  };
+  const auto ended = [&](const Contact& c) {
+    if (c.sensor) {
+      w.sensorEvents.ends.push_back(sensorEvent(w, c));
+    } else {
       events.ends.push_back({w.shapeIdOf(c.keyA), w.shapeIdOf(c.keyB)});
       linkContact(w, c, false);
     }
@@ -225,16 +260,19 @@ void updateContacts(WorldState& w) {
   };
   for (Contact& c : w.nextContacts) {
     while (old < w.contacts.size() && before(w.contacts[old], c)) {
-      endTouching(w.contacts[old++]);
+      if (w.contacts[old].touching) {
+        ended(w.contacts[old]);
+      }
+      ++old;
     }
     const bool carried = old < w.contacts.size() && !before(c, w.contacts[old]);
-    const Shape& a = w.shapes[c.shapeA];
-    const Shape& b = w.shapes[c.shapeB];
     if (carried && !awakeAndMoving(w.bodies[c.bodyA]) && !awakeAndMoving(w.bodies[c.bodyB])) {
       // Asleep (or asleep on a static body): nothing moved, the contact is as it was.
       c = w.contacts[old++];
       continue;
     }
+    const Shape& a = w.shapes[c.shapeA];
+    const Shape& b = w.shapes[c.shapeB];
     c.friction = std::sqrt(a.friction * b.friction);
     c.restitution = std::max(a.restitution, b.restitution);
     c.rollingResistance =
@@ -242,27 +280,29 @@ void updateContacts(WorldState& w) {
     c.roundingA = roundingRadius(a);
     c.roundingB = roundingRadius(b);
     c.manifold = collide(a, w.bodies[c.bodyA].transform, b, w.bodies[c.bodyB].transform);
-    const bool wasTouching = carried && w.contacts[old].manifold.pointCount > 0;
+    // A sensor's pair is touching while the shapes overlap; any other while it has points.
+    c.touching = c.sensor ? overlapping(c.manifold) : c.manifold.pointCount > 0;
+    const bool wasTouching = carried && w.contacts[old].touching;
     if (carried) {
       const Contact& previous = w.contacts[old++];
       c.tangent1 = previous.tangent1;
       c.rollingImpulse = previous.rollingImpulse;
       carryImpulses(c, previous.manifold, previous.impulses);
     }
-    if (c.manifold.pointCount > 0) {
+    if (c.touching && !c.sensor) {
       updateTangents(c, wasTouching);
-      if (!wasTouching) {
-        events.begins.push_back({a.id, b.id});
-        linkContact(w, c, true);
-      }
       wakeTouched(w, c);
-    } else if (wasTouching) {
-      events.ends.push_back({a.id, b.id});
-      linkContact(w, c, false);
+    }
+    if (c.touching && !wasTouching) {
+      began(c);
+    } else if (!c.touching && wasTouching) {
+      ended(c);
     }
   }
-  while (old < w.contacts.size()) {
-    endTouching(w.contacts[old++]);
+  for (; old < w.contacts.size(); ++old) {
+    if (w.contacts[old].touching) {
+      ended(w.contacts[old]);
+    }
   }
   std::swap(w.contacts, w.nextContacts);
 }

@@ -29,7 +29,12 @@ struct Contact {
   std::uint64_t keyA = 0, keyB = 0;
   std::uint32_t shapeA = 0, shapeB = 0; ///< shape slots
   std::uint32_t bodyA = 0, bodyB = 0;   ///< body slots
-  float friction = 0.0f;                ///< the geometric mean of the shapes'
+  /// One of the shapes is a sensor: the pair is reported, never solved.
+  bool sensor = false;
+  bool sensorIsA = false; ///< which of the two is the sensor
+  /// Touching this step: a manifold with points (a sensor's pair: overlapping).
+  bool touching = false;
+  float friction = 0.0f; ///< the geometric mean of the shapes'
   /// How far A's and B's surfaces lie out from their cores, m: a sphere's or capsule's radius
   /// (0 for a hull).
   float roundingA = 0.0f, roundingB = 0.0f;

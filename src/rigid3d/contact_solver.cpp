@@ -286,7 +286,7 @@ void prepareContacts(WorldState& w, const StepContext& context) {
     // Between two bodies out of this step's motion (asleep, or asleep on a static body): not
     // solved.
     const bool inMotion = (a.awake && a.moving()) || (b.awake && b.moving());
-    if (contact.manifold.pointCount > 0 && inMotion) {
+    if (contact.touching && !contact.sensor && inMotion) {
       w.constraints.push_back(makeConstraint(w, contact, static_cast<std::uint32_t>(i), context));
     }
   }

@@ -140,7 +140,7 @@ void sweepFastBodies(WorldState& w) {
     const Vec3f upper = max(sweep.c0, sweep.c1) + grow;
     float first = 1.0f;
     for (const Shape& other : w.shapes) {
-      if (!other.alive || other.body == b.id.index) {
+      if (!other.alive || other.sensor || other.body == b.id.index) {
         continue;
       }
       const Body& ob = w.bodies[other.body];
@@ -171,7 +171,7 @@ void sweepFastBodies(WorldState& w) {
         continue;
       }
       for (const std::uint32_t slot : b.shapes) {
-        if (shouldCollide(w.shapes[slot].filter, other.filter)) {
+        if (!w.shapes[slot].sensor && shouldCollide(w.shapes[slot].filter, other.filter)) {
           first = std::min(first, timeOfImpact(w.shapes[slot].geometry, sweep, fixed, linearSlop, scratch));
         }
       }

@@ -69,6 +69,7 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const ShapeGeometry
     throwInvalid("restitution", s.restitution, "must be at most 1 (a bounce gains no energy)");
   }
   s.filter = def.filter;
+  s.sensor = def.isSensor;
   s.userData = def.userData;
   const ShapeId id = detail::placeRecord<ShapeTag>(w.shapeIds, w.shapes, std::move(s));
   b.shapes.push_back(id.index);

@@ -14,7 +14,7 @@ namespace {
 
 /// Whether a contact joins its bodies' islands: touching, between two dynamic bodies.
 bool joins(const WorldState& w, const Contact& c) {
-  return c.manifold.pointCount > 0 && w.bodies[c.bodyA].type == BodyType::dynamicBody &&
+  return c.touching && !c.sensor && w.bodies[c.bodyA].type == BodyType::dynamicBody &&
          w.bodies[c.bodyB].type == BodyType::dynamicBody;
 }
 

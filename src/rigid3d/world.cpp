@@ -82,11 +82,12 @@ void World::shiftOrigin(const Vec3f& newOrigin) {
 }
 
 const ContactEvents& World::contactEvents() const noexcept { return impl_->contactEvents; }
+const SensorEvents& World::sensorEvents() const noexcept { return impl_->sensorEvents; }
 
 void World::contacts(std::vector<ContactData>& out) const {
   out.clear();
   for (const detail::Contact& c : impl_->contacts) {
-    if (c.manifold.pointCount == 0) {
+    if (!c.touching || c.sensor) {
       continue;
     }
     ContactData d;
@@ -104,7 +105,7 @@ void World::contacts(std::vector<ContactData>& out) const {
 
 std::uint32_t World::contactCount() const noexcept {
   return static_cast<std::uint32_t>(std::count_if(impl_->contacts.begin(), impl_->contacts.end(),
-                                                  [](const detail::Contact& c) { return c.manifold.pointCount > 0; }));
+                                                  [](const detail::Contact& c) { return c.touching && !c.sensor; }));
 }
 
 std::uint64_t World::stateHash() const {

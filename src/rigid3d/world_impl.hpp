@@ -28,6 +28,7 @@ struct Shape {
   float restitution = 0.0f;
   float rollingResistance = 0.0f;
   CollisionFilter filter;
+  bool sensor = false;
   std::uint64_t userData = 0;
   ShapeId id;
   bool alive = false;
@@ -125,6 +126,7 @@ struct WorldState {
   /// Scratch of the pair update, kept to spare allocations.
   std::vector<Contact> nextContacts;
   ContactEvents contactEvents; ///< the last step's
+  SensorEvents sensorEvents;   ///< the last step's
   /// The dynamic bodies joined by touching contacts (the sleeping unit).
   solver::Islands islands;
   std::vector<std::uint32_t> sleepCandidates; ///< scratch of updateSleep: islands in order

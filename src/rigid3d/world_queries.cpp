@@ -31,7 +31,7 @@ template <class Visit> void forEachRayHit(const detail::WorldState& w, const Vec
   requireFinite(translation, "translation");
   const RayCastInput input{origin, translation, 1.0f};
   for (const detail::Shape& s : w.shapes) {
-    if (!s.alive || !shouldCollide(filter, s.filter)) {
+    if (!s.alive || s.sensor || !shouldCollide(filter, s.filter)) {
       continue;
     }
     const CastOutput out = rayCast(s.geometry, w.bodies[s.body].transform, input);
@@ -74,7 +74,7 @@ std::vector<ShapeId> World::overlapShape(const ShapeGeometry& shape, const Trans
   std::vector<ShapeId> out;
   detail::PlacedShape other;
   for (const detail::Shape& s : w.shapes) {
-    if (!s.alive || !shouldCollide(filter, s.filter)) {
+    if (!s.alive || s.sensor || !shouldCollide(filter, s.filter)) {
       continue;
     }
     other.place(s.geometry, w.bodies[s.body].transform);

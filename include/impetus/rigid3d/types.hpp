@@ -83,6 +83,10 @@ struct ShapeDef {
   float rollingResistance = 0.0f;
   /// Which shapes it collides with (categories, masks, groups), and which queries see it.
   CollisionFilter filter;
+  /// A sensor: it pushes nothing and is pushed by nothing, and reports the shapes that overlap
+  /// it (World::sensorEvents: a trigger volume). Its density still counts toward its body's mass.
+  /// Sensors see other bodies' shapes, not other sensors.
+  bool isSensor = false;
   std::uint64_t userData = 0;
 };
 

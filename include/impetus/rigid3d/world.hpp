@@ -56,6 +56,16 @@ struct ContactEvents {
   std::vector<ContactHitEvent> hits;
 };
 
+/// A shape began or stopped overlapping a sensor shape.
+struct SensorEvent {
+  ShapeId sensor;
+  ShapeId visitor;
+};
+struct SensorEvents {
+  std::vector<SensorEvent> begins;
+  std::vector<SensorEvent> ends;
+};
+
 /// Where a ray met a shape.
 struct RayHit {
   ShapeId shape;
@@ -162,6 +172,8 @@ public:
   /// The contact events of the last step, in a fixed order (the contacts' keys: A's shape, then
   /// B's), valid until the next step.
   [[nodiscard]] const ContactEvents& contactEvents() const noexcept;
+  /// The sensor events of the last step (begins and ends of overlaps), in the contacts' order.
+  [[nodiscard]] const SensorEvents& sensorEvents() const noexcept;
   /// The contacts whose manifolds have points (touching, or about to), in a fixed order.
   void contacts(std::vector<ContactData>& out) const;
   [[nodiscard]] std::uint32_t contactCount() const noexcept;
