@@ -2,6 +2,7 @@
 // warm started from the last step's impulses, solved with bias and relaxed each substep, then
 // restitution. The rows are the shared solver's (solver/constraint_row.hpp) on 3D vectors.
 #include "rigid3d/world_impl.hpp"
+#include "solver/colour_graph.hpp"
 #include "solver/constraint_row.hpp"
 
 #include <impetus/rigid3d/constants.hpp>
@@ -275,6 +276,38 @@ ConstraintPoint bounceAnchors(const ContactConstraint& c, const ConstraintPoint&
   return q;
 }
 
+/// Puts the constraints in the order of the constraint graph's colours (the overflow first, then
+/// colour after colour; within each, the contacts' key order): each colour's constraints share no
+/// moving body. Solved one after another in key order, a pile's contacts run bottom to top (its
+/// shapes were made row by row) and the support of each row reaches the next only a substep
+/// later: Box3D's large pyramid of 5050 cubes sank 1.4 m in 200 steps and came apart, and stands
+/// with its top 0.7 m down in colour order, as in Box3D. The colours are found anew each step
+/// for now; they become the persistent graph of the shared solver with the persistent pairs.
+void orderByColour(WorldState& w) {
+  solver::ColourGraph& graph = w.contactColours;
+  graph.clear();
+  const auto graphBody = [&](const ContactConstraint& c, bool a) {
+    // Bodies the solver does not move (static, kinematic) take no colour.
+    const float inverseMass = a ? c.mA : c.mB;
+    return inverseMass > 0.0f ? (a ? w.awakeBodies[c.indexA] : w.awakeBodies[c.indexB]) : solver::ColourGraph::noBody;
+  };
+  for (std::size_t i = 0; i < w.constraints.size(); ++i) {
+    const ContactConstraint& c = w.constraints[i];
+    graph.add(static_cast<std::uint32_t>(i), graphBody(c, true), graphBody(c, false));
+  }
+  w.orderedConstraints.clear();
+  const auto take = [&](std::uint32_t colour) {
+    for (const std::uint32_t i : graph.members(colour)) {
+      w.orderedConstraints.push_back(w.constraints[i]);
+    }
+  };
+  take(solver::ColourGraph::overflow);
+  for (std::uint32_t colour = 0; colour < solver::graphColourCount; ++colour) {
+    take(colour);
+  }
+  std::swap(w.constraints, w.orderedConstraints);
+}
+
 } // namespace
 
 void prepareContacts(WorldState& w, const StepContext& context) {
@@ -290,6 +323,7 @@ void prepareContacts(WorldState& w, const StepContext& context) {
       w.constraints.push_back(makeConstraint(w, contact, static_cast<std::uint32_t>(i), context));
     }
   }
+  orderByColour(w);
 }
 
 void warmStartContacts(WorldState& w) {

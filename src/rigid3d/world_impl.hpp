@@ -2,6 +2,7 @@
 #pragma once
 
 #include "rigid3d/contact.hpp"
+#include "solver/colour_graph.hpp"
 #include "solver/islands.hpp"
 #include "solver/slot_list.hpp"
 #include "solver/softness.hpp"
@@ -121,8 +122,11 @@ struct WorldState {
   /// The contacts, in the order of their keys (A's shape key, then B's): the pairs of shapes
   /// whose boxes overlap, kept from step to step with their impulses.
   std::vector<Contact> contacts;
-  /// This step's contact constraints: the contacts with points, in the contacts' order.
+  /// This step's contact constraints: the touching contacts, in the constraint graph's colour
+  /// order (orderByColour).
   std::vector<ContactConstraint> constraints;
+  std::vector<ContactConstraint> orderedConstraints; ///< scratch of the colour order
+  solver::ColourGraph contactColours;
   /// Scratch of the pair update, kept to spare allocations.
   std::vector<Contact> nextContacts;
   ContactEvents contactEvents; ///< the last step's
