@@ -14,6 +14,7 @@
 // contacts began and ended, which the collide pass fixes, so the solve is bit-identical run
 // after run.
 #include "rigid2d/constraint_graph.hpp"
+#include "solver/contact_normal.hpp"
 
 #include <impetus/math/scalar.hpp>
 
@@ -221,23 +222,11 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
   }
   for (int k = 0; k < c.pointCount; ++k) {
     ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-    const float s = separation[static_cast<std::size_t>(k)];
-    float bias = 0.0f;
-    float massScale = 1.0f;
-    float impulseScale = 0.0f;
-    if (s > 0.0f) {
-      bias = s * params.inverseH; // speculative: may close the gap this substep, no more
-    } else if (params.useBias) {
-      bias = std::max(c.softness.biasRate * s, -params.pushSpeed);
-      massScale = c.softness.massScale;
-      impulseScale = c.softness.impulseScale;
-    }
+    const solver::NormalTarget target = solver::normalTarget(separation[static_cast<std::size_t>(k)], c.softness,
+                                                             params.useBias, params.inverseH, params.pushSpeed);
     const float vn = dot(velocityAt(b, p.rB) - velocityAt(a, p.rA), c.normal);
-    const float impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
-    const float total = std::min(std::max(p.normalImpulse + impulse, 0.0f), p.normalBound);
-    const float applied = total - p.normalImpulse;
-    p.normalImpulse = total;
-    p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
+    const float applied =
+        solver::accumulateNormalImpulse(p.normalImpulse, p.maxNormalImpulse, p.normalMass, p.normalBound, vn, target);
     applyImpulse(a, b, c, p, c.normal * applied);
   }
   // Friction and rolling resistance in the relax pass only (ContactSolveParams::useBias).

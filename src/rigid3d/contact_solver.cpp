@@ -4,6 +4,7 @@
 #include "rigid3d/world_impl.hpp"
 #include "solver/colour_graph.hpp"
 #include "solver/constraint_row.hpp"
+#include "solver/contact_normal.hpp"
 
 #include <impetus/rigid3d/constants.hpp>
 
@@ -222,26 +223,14 @@ void solveOne(ContactConstraint& c, std::vector<BodyState>& states, std::uint32_
     float sum = 0.0f;
     for (int k = 0; k < c.pointCount; ++k) {
       ConstraintPoint& p = c.points[static_cast<std::size_t>(k)];
-      const float s = separation[static_cast<std::size_t>(k)];
-      float bias = 0.0f;
-      float massScale = 1.0f;
-      float impulseScale = 0.0f;
-      if (s > 0.0f) {
-        bias = s * context.inverseH; // speculative: the gap may close this substep, no more
-      } else if (useBias) {
-        bias = std::max(soft.biasRate * s, -context.maxContactPushSpeed);
-        massScale = soft.massScale;
-        impulseScale = soft.impulseScale;
-      }
+      const solver::NormalTarget target = solver::normalTarget(separation[static_cast<std::size_t>(k)], soft, useBias,
+                                                               context.inverseH, context.maxContactPushSpeed);
       const float vn = dot(relativeVelocity(a, b, p), c.normal);
-      const float impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.impulse.normal;
-      const float total = std::min(std::max(p.impulse.normal + impulse, 0.0f), p.normalBound);
-      const float applied = total - p.impulse.normal;
-      p.impulse.normal = total;
-      p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
+      const float applied = solver::accumulateNormalImpulse(p.impulse.normal, p.maxNormalImpulse, p.normalMass,
+                                                            p.normalBound, vn, target);
       applyImpulse(a, b, c, p, c.normal * applied);
       largest = std::max(largest, std::abs(applied));
-      sum += total;
+      sum += p.impulse.normal;
     }
     if (largest <= relaxConvergence * sum) {
       break;
