@@ -28,14 +28,7 @@ void requireRegion(const std::optional<AABB>& region) {
   if (!region) {
     return;
   }
-  requireFinite(region->lower, "region.lower");
-  requireFinite(region->upper, "region.upper");
-  if (region->upper.x < region->lower.x) {
-    throwInvalid("region.upper.x", static_cast<double>(region->upper.x), "must be >= region.lower.x");
-  }
-  if (region->upper.y < region->lower.y) {
-    throwInvalid("region.upper.y", static_cast<double>(region->upper.y), "must be >= region.lower.y");
-  }
+  requireValid(*region, "region");
 }
 
 bool insideRegion(const AABB& box, const Vec2f& p) {

@@ -65,9 +65,7 @@ std::vector<RayHit> World::castRayAll(const Vec2f& origin, const Vec2f& translat
 }
 
 std::vector<ShapeId> World::queryAABB(const AABB& box) const {
-  if (!rigid2d::isValid(box)) {
-    throwInvalid("box", std::nan(""), "AABB must be finite with lower <= upper");
-  }
+  requireValid(box, "box");
   const Impl& w = *impl_;
   std::vector<ShapeId> found;
   const auto visit = [&](std::int32_t, std::uint64_t slot64) {

@@ -15,6 +15,10 @@ template <Real T> struct Vec2 {
 
   [[nodiscard]] static constexpr Vec2 zero() noexcept { return {}; }
 
+  /// Component i (0 = x, 1 = y).
+  [[nodiscard]] constexpr T operator[](int i) const noexcept { return i == 0 ? x : y; }
+  [[nodiscard]] constexpr T& operator[](int i) noexcept { return i == 0 ? x : y; }
+
   constexpr Vec2& operator+=(const Vec2& v) noexcept {
     x += v.x;
     y += v.y;

@@ -1,9 +1,12 @@
-// Axis-aligned bounding boxes: the broadphase's currency.
+// Axis-aligned bounding boxes: the broadphase's currency. Their free functions are what the
+// dynamic tree needs of a box (impetus::TreeBox, core/dynamic_tree.hpp); rigid3d::AABB has the
+// same ones in 3D.
 #pragma once
 
+#include <impetus/core/aabb_common.hpp>
 #include <impetus/math/vec2.hpp>
 
-#include <algorithm>
+#include <string_view>
 
 namespace impetus::rigid2d {
 
@@ -28,9 +31,16 @@ struct AABB {
 [[nodiscard]] inline AABB merge(const AABB& a, const AABB& b) noexcept {
   return {min(a.lower, b.lower), max(a.upper, b.upper)};
 }
-/// Perimeter: the surface-area heuristic's cost of a box in 2D.
+/// The perimeter, m.
 [[nodiscard]] inline float perimeter(const AABB& a) noexcept {
   return 2.0f * ((a.upper.x - a.lower.x) + (a.upper.y - a.lower.y));
+}
+/// The dynamic tree's surface-area heuristic cost: the perimeter in 2D, m.
+[[nodiscard]] inline float sahCost(const AABB& a) noexcept { return perimeter(a); }
+/// The axis the dynamic tree's median rebuild splits a box of centres across: its longer extent
+/// (0 = x, 1 = y; y when they are equal).
+[[nodiscard]] inline int splitAxis(const AABB& a) noexcept {
+  return a.upper.x - a.lower.x > a.upper.y - a.lower.y ? 0 : 1;
 }
 [[nodiscard]] inline AABB enlarge(const AABB& a, float margin) noexcept {
   return {a.lower - Vec2f{margin, margin}, a.upper + Vec2f{margin, margin}};
@@ -39,36 +49,18 @@ struct AABB {
 
 /// Whether the segment p1 -> p2 crosses the box (slab test), and the entry fraction.
 [[nodiscard]] inline bool segmentOverlaps(const AABB& box, const Vec2f& p1, const Vec2f& p2, float* entry = nullptr) {
-  float tmin = 0.0f;
-  float tmax = 1.0f;
-  const Vec2f d = p2 - p1;
-  const float start[2] = {p1.x, p1.y};
-  const float dir[2] = {d.x, d.y};
-  const float lo[2] = {box.lower.x, box.lower.y};
-  const float hi[2] = {box.upper.x, box.upper.y};
-  for (int i = 0; i < 2; ++i) {
-    if (dir[i] == 0.0f) {
-      if (start[i] < lo[i] || start[i] > hi[i]) {
-        return false;
-      }
-      continue;
-    }
-    const float inv = 1.0f / dir[i];
-    float t1 = (lo[i] - start[i]) * inv;
-    float t2 = (hi[i] - start[i]) * inv;
-    if (t1 > t2) {
-      std::swap(t1, t2);
-    }
-    tmin = std::max(tmin, t1);
-    tmax = std::min(tmax, t2);
-    if (tmin > tmax) {
-      return false;
-    }
+  return segmentCrossesBox<2>(box.lower, box.upper, p1, p2, entry);
+}
+
+/// Returns `box` when it is finite with lower <= upper; otherwise throws impetus::Error naming
+/// the bad component under `field` ("box.upper.x = -1: must be >= box.lower.x").
+inline const AABB& requireValid(const AABB& box, std::string_view field) {
+  if (!isValid(box)) [[unlikely]] {
+    const float lower[] = {box.lower.x, box.lower.y};
+    const float upper[] = {box.upper.x, box.upper.y};
+    throwInvalidBounds(field, lower, upper);
   }
-  if (entry != nullptr) {
-    *entry = tmin;
-  }
-  return true;
+  return box;
 }
 
 } // namespace impetus::rigid2d
